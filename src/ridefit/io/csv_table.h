@@ -1,0 +1,54 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ridefit::io {
+
+// One column of a time-series CSV, in SI units.
+struct CsvColumn {
+  std::string name;         // e.g. "body_acc"
+  std::string unit;         // the SI unit after conversion, e.g. "m/s^2"
+  std::vector<double> values;
+};
+
+// A CSV file with one header row whose every column reads `name[unit]`
+// (e.g. `time[s],road[mm],body_acc[g]`). Reading converts every column to SI; an unknown
+// unit, a missing unit, a non-numeric cell, a ragged row or an empty table is an
+// InputError that names the file, the row and the column.
+class CsvTable {
+ public:
+  static CsvTable read(const std::filesystem::path& path);
+
+  CsvTable() = default;
+  explicit CsvTable(std::filesystem::path source) : source_(std::move(source)) {}
+
+  void add(std::string name, std::string unit, std::vector<double> values);
+  bool has(const std::string& name) const;
+  // Throws InputError naming the file and the columns that do exist.
+  const CsvColumn& column(const std::string& name) const;
+  const std::vector<CsvColumn>& columns() const { return columns_; }
+  std::size_t rows() const { return columns_.empty() ? 0 : columns_.front().values.size(); }
+  const std::filesystem::path& source() const { return source_; }
+
+  // A `time` column that must be strictly increasing (checked, the row is named).
+  const std::vector<double>& time_s() const;
+
+  // Writes atomically (temporary file, then rename): a failed write leaves no file.
+  void write(const std::filesystem::path& path) const;
+
+ private:
+  std::filesystem::path source_;
+  std::vector<CsvColumn> columns_;
+};
+
+// Converts `value` in `unit` to SI for the quantity kind implied by the unit; returns the
+// factor and offset-free SI unit. Throws InputError for an unknown unit.
+struct UnitConversion {
+  double factor_to_si = 1.0;
+  std::string si_unit;
+};
+UnitConversion unit_to_si(const std::string& unit);
+
+}  // namespace ridefit::io

@@ -1,0 +1,168 @@
+#include "ridefit/io/yaml_map.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::io {
+
+YamlMap YamlMap::load(const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) {
+    throw InputError(fmt::format("{}: file not found", path.string()));
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path.string());
+  } catch (const YAML::Exception& e) {
+    throw InputError(fmt::format("{}:{}:{}: not valid YAML: {}", path.string(), e.mark.line + 1,
+                                 e.mark.column + 1, e.msg));
+  }
+  if (!root.IsMap()) {
+    throw InputError(
+        fmt::format("{}: expected a YAML mapping of `key: value` lines at the top level",
+                    path.string()));
+  }
+  return YamlMap(root, path, "");
+}
+
+YamlMap::YamlMap(YAML::Node node, std::filesystem::path path, std::string where)
+    : node_(std::move(node)), path_(std::move(path)), where_(std::move(where)) {}
+
+std::string YamlMap::locate(const std::string& key) const {
+  const std::string full = where_.empty() ? key : where_ + "." + key;
+  return fmt::format("{}: key '{}'", path_.string(), full);
+}
+
+bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_[key]); }
+
+YAML::Node YamlMap::required(const std::string& key) const {
+  used_.insert(key);
+  const YAML::Node value = node_[key];
+  if (!value || value.IsNull()) {
+    throw InputError(fmt::format("{} is missing (required)", locate(key)));
+  }
+  return value;
+}
+
+double YamlMap::number(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (!value.IsScalar()) {
+    throw InputError(fmt::format("{} must be a number", locate(key)));
+  }
+  double result = 0.0;
+  try {
+    result = value.as<double>();
+  } catch (const YAML::Exception&) {
+    throw InputError(
+        fmt::format("{} is '{}', expected a number", locate(key), value.Scalar()));
+  }
+  if (!std::isfinite(result)) {
+    throw InputError(fmt::format("{} is '{}', expected a finite number", locate(key),
+                                 value.Scalar()));
+  }
+  return result;
+}
+
+double YamlMap::positive(const std::string& key) const {
+  const double v = number(key);
+  if (!(v > 0.0)) {
+    throw InputError(fmt::format("{} is {}, expected a value > 0", locate(key), v));
+  }
+  return v;
+}
+
+double YamlMap::non_negative(const std::string& key) const {
+  const double v = number(key);
+  if (v < 0.0) {
+    throw InputError(fmt::format("{} is {}, expected a value >= 0", locate(key), v));
+  }
+  return v;
+}
+
+double YamlMap::number_in(const std::string& key, double lo, double hi) const {
+  const double v = number(key);
+  if (v < lo || v > hi) {
+    throw InputError(fmt::format("{} is {}, expected a value in [{}, {}]", locate(key), v, lo, hi));
+  }
+  return v;
+}
+
+double YamlMap::number_or(const std::string& key, double fallback) const {
+  used_.insert(key);
+  return has(key) ? number(key) : fallback;
+}
+
+long YamlMap::integer(const std::string& key) const {
+  const YAML::Node value = required(key);
+  try {
+    return value.as<long>();
+  } catch (const YAML::Exception&) {
+    throw InputError(
+        fmt::format("{} is '{}', expected an integer", locate(key),
+                    value.IsScalar() ? value.Scalar() : std::string("a non-scalar")));
+  }
+}
+
+long YamlMap::integer_or(const std::string& key, long fallback) const {
+  used_.insert(key);
+  return has(key) ? integer(key) : fallback;
+}
+
+std::string YamlMap::text(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (!value.IsScalar()) {
+    throw InputError(fmt::format("{} must be a text value", locate(key)));
+  }
+  return value.Scalar();
+}
+
+std::string YamlMap::text_or(const std::string& key, const std::string& fallback) const {
+  used_.insert(key);
+  return has(key) ? text(key) : fallback;
+}
+
+std::string YamlMap::choice(const std::string& key, const std::set<std::string>& choices) const {
+  const std::string v = text(key);
+  if (choices.count(v) == 0) {
+    std::string list;
+    for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+    throw InputError(fmt::format("{} is '{}', expected one of: {}", locate(key), v, list));
+  }
+  return v;
+}
+
+YamlMap YamlMap::map(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (!value.IsMap()) {
+    throw InputError(fmt::format("{} must be a mapping of `key: value` entries", locate(key)));
+  }
+  return YamlMap(value, path_, where_.empty() ? key : where_ + "." + key);
+}
+
+std::filesystem::path YamlMap::file(const std::string& key) const {
+  std::filesystem::path p = text(key);
+  if (p.is_relative()) p = path_.parent_path() / p;
+  return p;
+}
+
+void YamlMap::finish() const {
+  std::vector<std::string> unknown;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.as<std::string>();
+    if (used_.count(key) == 0) unknown.push_back(key);
+  }
+  if (unknown.empty()) return;
+  std::string list;
+  for (const auto& k : unknown) list += (list.empty() ? "'" : ", '") + k + "'";
+  std::string known;
+  for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
+  throw InputError(fmt::format("{}: unknown key{} {}{}; the keys read here are: {}",
+                               path_.string(), unknown.size() > 1 ? "s" : "", list,
+                               where_.empty() ? "" : " under '" + where_ + "'", known));
+}
+
+}  // namespace ridefit::io

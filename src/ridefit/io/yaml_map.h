@@ -1,0 +1,60 @@
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+
+namespace ridefit::io {
+
+// Strict, self-describing access to one YAML mapping of a user's file.
+//
+// Every read names the key it asked for, so that when the file is wrong the message says
+// which file, which key, what was found and what is expected. Call finish() once all keys
+// are read: any key nobody asked for is a typo and is rejected.
+class YamlMap {
+ public:
+  // Loads `path` and wraps its top-level mapping.
+  static YamlMap load(const std::filesystem::path& path);
+
+  // Wraps a node that was found under `where` (e.g. "model.tyre") in file `path`.
+  YamlMap(YAML::Node node, std::filesystem::path path, std::string where);
+
+  const std::filesystem::path& path() const { return path_; }
+  bool has(const std::string& key) const;
+
+  // A required real number; `min_exclusive`/`min_inclusive` express range rules.
+  double number(const std::string& key) const;
+  double positive(const std::string& key) const;     // > 0
+  double non_negative(const std::string& key) const;  // >= 0
+  double number_in(const std::string& key, double lo, double hi) const;  // lo <= v <= hi
+  double number_or(const std::string& key, double fallback) const;
+  long integer(const std::string& key) const;
+  long integer_or(const std::string& key, long fallback) const;
+  std::string text(const std::string& key) const;
+  std::string text_or(const std::string& key, const std::string& fallback) const;
+  // One of `choices`; the message lists them.
+  std::string choice(const std::string& key, const std::set<std::string>& choices) const;
+  // A nested mapping.
+  YamlMap map(const std::string& key) const;
+  // A path read relative to the directory of this file.
+  std::filesystem::path file(const std::string& key) const;
+
+  // Throws InputError naming every key that was present but never read.
+  void finish() const;
+
+  // "FILE: key 'a.b'" prefix for messages about `key`.
+  std::string locate(const std::string& key) const;
+
+ private:
+  YAML::Node required(const std::string& key) const;
+
+  YAML::Node node_;
+  std::filesystem::path path_;
+  std::string where_;
+  mutable std::set<std::string> used_;
+};
+
+}  // namespace ridefit::io

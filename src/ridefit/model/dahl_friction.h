@@ -1,0 +1,36 @@
+#pragma once
+
+#include "ridefit/model/scalar_math.h"
+
+namespace ridefit::model {
+
+// Dahl friction (seed 000, Section 3.1). The friction force F is a state:
+//
+//   dF/dt = σ0 · v · |1 − (F/Fc)·sgn v|^d · sgn(1 − (F/Fc)·sgn v)
+//
+// with sliding velocity v, pre-sliding (contact) stiffness σ0, Coulomb force Fc and shape
+// exponent d. From rest with d = 1 and constant-sign motion, F(x) = Fc(1 − exp(−σ0 x / Fc)).
+//
+// The kink at v = 0: the right-hand side is continuous there, because every branch is
+// multiplied by v and so vanishes; only its slope ∂(dF/dt)/∂v jumps, from
+// σ0·|1 + F/Fc|^d·sgn(1 + F/Fc) (v < 0) to σ0·|1 − F/Fc|^d·sgn(1 − F/Fc) (v > 0). We take
+// sgn 0 = +1, i.e. the v > 0 branch's slope at exactly v = 0 (a one-sided derivative, which
+// Newton iterations and Ceres tolerate; exact zeros of v are rare in floating point).
+//
+// Fc = 0 means no friction: the force stays at zero (the formula would divide by zero).
+template <typename T>
+struct DahlFriction {
+  T sigma0_N_per_m;
+  T coulomb_force_N;
+  T exponent;
+
+  bool active() const { return coulomb_force_N > 0.0; }
+
+  T force_rate_N_per_s(const T& force_N, const T& velocity_m_per_s) const {
+    if (!active()) return T(0.0);
+    const T s = T(1.0) - force_N / coulomb_force_N * sign_positive_at_zero(velocity_m_per_s);
+    return sigma0_N_per_m * velocity_m_per_s * signed_power(s, exponent);
+  }
+};
+
+}  // namespace ridefit::model

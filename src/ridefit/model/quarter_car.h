@@ -1,0 +1,153 @@
+#pragma once
+
+#include <array>
+#include <string>
+
+#include "ridefit/model/kelvin_voigt.h"
+#include "ridefit/model/linear_spring.h"
+#include "ridefit/model/strut_damper_path.h"
+#include "ridefit/road/road_input.h"
+
+namespace ridefit::model {
+
+// Parameters of a MacPherson-strut quarter car, templated so Ceres can differentiate
+// with respect to them. Names follow design.md's table.
+template <typename T>
+struct QuarterCarParameters {
+  T sprung_mass_kg;
+  T unsprung_mass_kg;
+  T tyre_stiffness_N_per_m;
+  T tyre_damping_Ns_per_m;
+  T spring_stiffness_N_per_m;                 // coil spring
+  T top_mount_spring_path_stiffness_N_per_m;  // top mount, in series with the coil
+  T top_mount_stiffness_N_per_m;              // top mount, damper path
+  T damping_Ns_per_m;
+  T dahl_sigma0_N_per_m;
+  T coulomb_force_N;
+  T dahl_exponent;
+
+  template <typename U>
+  QuarterCarParameters<U> cast() const {
+    return {U(sprung_mass_kg),
+            U(unsprung_mass_kg),
+            U(tyre_stiffness_N_per_m),
+            U(tyre_damping_Ns_per_m),
+            U(spring_stiffness_N_per_m),
+            U(top_mount_spring_path_stiffness_N_per_m),
+            U(top_mount_stiffness_N_per_m),
+            U(damping_Ns_per_m),
+            U(dahl_sigma0_N_per_m),
+            U(coulomb_force_N),
+            U(dahl_exponent)};
+  }
+
+  // Coil spring in series with the top mount's spring path.
+  T spring_path_stiffness_N_per_m() const {
+    return series_stiffness(spring_stiffness_N_per_m, top_mount_spring_path_stiffness_N_per_m);
+  }
+  StrutDamperPath<T> damper_path() const {
+    return {{top_mount_stiffness_N_per_m},
+            {damping_Ns_per_m},
+            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
+  }
+};
+
+// Everything a quarter-car state shows at one instant (SI, signs as in QuarterCar).
+struct QuarterCarOutputs {
+  double road_m = 0;
+  double body_acc_m_per_s2 = 0;
+  double wheel_acc_m_per_s2 = 0;
+  double travel_m = 0;              // zs − zu, extension positive
+  double tyre_force_N = 0;          // dynamic tyre load, compression positive
+  double damper_force_N = 0;        // hydraulic damper force c·z_c'
+  double friction_force_N = 0;      // Dahl friction F_f
+  double top_mount_deflection_m = 0;  // damper path top mount, z − z_c
+  double stuck = 0;                 // 1 while the damper sticks (rule in QuarterCar)
+};
+
+// Quarter car of a MacPherson strut (seed 000, Figure 7 and Equations 9–11).
+//
+// Frame and signs: vertical coordinates positive upwards, measured from static
+// equilibrium (gravity and static preloads cancel for these linear springs); travel
+// z = zs − zu is positive in extension; element forces are positive in tension.
+//
+// State order: [zs, zu, vs, vu, z_c, F_f] — body and wheel displacement [m], their
+// velocities [m/s], then the damper's own deflection z_c [m] (slip and stick/slip) and the
+// Dahl friction force F_f [N] (stick/slip only). Sizes: slip 5, stick 4, stick/slip 6.
+//
+// Equations:
+//   ms·zs'' = −k_sp·z − F_path
+//   mu·zu'' =  k_sp·z + F_path − kt·(zu − h) − ct·(zu' − h')
+// with the spring path k_sp = coil in series with the top mount's spring path and F_path
+// from StrutDamperPath.
+//
+// Stuck rule (the `stuck` output): in stick/slip the damper counts as stuck while the
+// Dahl element is on its pre-sliding branch, |F_f| < 0.95·Fc (gross sliding drives |F_f|
+// to Fc; at 0.95·Fc and d = 1 the element has slid 3·Fc/σ0 since the last reversal).
+// The stick topology is always stuck, the slip topology never.
+class QuarterCar {
+ public:
+  static constexpr int kMaxStates = 6;
+  static constexpr double kStuckForceShare = 0.95;
+
+  QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters);
+
+  DamperState damper_state() const { return state_; }
+  const QuarterCarParameters<double>& parameters() const { return parameters_; }
+  int state_size() const { return 4 + StrutDamperPath<double>::state_count(state_); }
+  // Names of the states in order, for messages and output.
+  std::array<const char*, kMaxStates> state_names() const;
+
+  // x' = f(t, x, road; p). Pure: the model object is never changed.
+  template <typename T>
+  void derivatives(const T* x, const road::RoadSample& road, const QuarterCarParameters<T>& p,
+                   T* xdot) const {
+    const T& zs = x[0];
+    const T& zu = x[1];
+    const T& vs = x[2];
+    const T& vu = x[3];
+    const T travel = zs - zu;
+    const StrutDamperPath<T> path = p.damper_path();
+    T path_force(0.0);
+    switch (state_) {
+      case DamperState::kStick:
+        path_force = path.path_force_N(travel, T(0.0));
+        break;
+      case DamperState::kSlip:
+        path_force = path.path_force_N(travel, x[4]);
+        xdot[4] = path.damper_rate_m_per_s(path_force, T(0.0));
+        break;
+      case DamperState::kStickSlip: {
+        path_force = path.path_force_N(travel, x[4]);
+        const T damper_rate = path.damper_rate_m_per_s(path_force, x[5]);
+        xdot[4] = damper_rate;
+        xdot[5] = path.friction.force_rate_N_per_s(x[5], damper_rate);
+        break;
+      }
+    }
+    const T spring_force = p.spring_path_stiffness_N_per_m() * travel;
+    const KelvinVoigt<T> tyre{p.tyre_stiffness_N_per_m, p.tyre_damping_Ns_per_m};
+    const T tyre_force = tyre.force_N(zu - road.elevation_m, vu - road.rate_m_per_s);
+    xdot[0] = vs;
+    xdot[1] = vu;
+    xdot[2] = -(spring_force + path_force) / p.sprung_mass_kg;
+    xdot[3] = (spring_force + path_force - tyre_force) / p.unsprung_mass_kg;
+  }
+
+  template <typename T>
+  void derivatives(const T* x, const road::RoadSample& road, T* xdot) const {
+    derivatives(x, road, parameters_.cast<T>(), xdot);
+  }
+
+  // All output channels at one state.
+  QuarterCarOutputs outputs(const double* x, const road::RoadSample& road) const;
+
+ private:
+  DamperState state_;
+  QuarterCarParameters<double> parameters_;
+};
+
+// "slip" | "stick" | "stick_slip" and back.
+const char* to_string(DamperState state);
+
+}  // namespace ridefit::model

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cmath>
+
+namespace ridefit::model {
+
+// Small helpers written once for every scalar the physics runs on: double, Eigen's
+// AutoDiffScalar (the integrator's Jacobian) and ceres::Jet (fitting). Only operations
+// that all three provide (comparison, abs, exp, log, arithmetic) are used; the functions
+// are found by argument-dependent lookup.
+
+// Sign with sgn(0) = +1. The physics only uses it where it multiplies a factor that
+// vanishes at zero, so the choice affects one-sided derivatives only (see dahl_friction.h).
+template <typename T>
+T sign_positive_at_zero(const T& x) {
+  return x < 0.0 ? T(-1.0) : T(1.0);
+}
+
+// sgn(s) * |s|^d for d > 0, with an exact zero at s = 0 (where log|s| would be -inf, and
+// its derivative with respect to d is 0 by continuity).
+template <typename T, typename E>
+T signed_power(const T& s, const E& d) {
+  using std::abs;
+  using std::exp;
+  using std::log;
+  if (s == 0.0) return T(0.0);
+  const T magnitude = exp(d * log(abs(s)));
+  return s < 0.0 ? T(-magnitude) : magnitude;
+}
+
+}  // namespace ridefit::model

@@ -1,0 +1,54 @@
+#pragma once
+
+#include "ridefit/model/dahl_friction.h"
+#include "ridefit/model/linear_damper.h"
+#include "ridefit/model/linear_spring.h"
+
+namespace ridefit::model {
+
+// How the damper of a MacPherson strut behaves (seed 000, Figure 7).
+enum class DamperState {
+  kSlip,       // top mount in series with the damper: a Maxwell element
+  kStick,      // damper locked: the top mount alone carries the damper path
+  kStickSlip,  // top mount in series with (damper ∥ Dahl friction): a Bingham-Hooke element
+};
+
+// The damper path of a strut: top-mount spring k_tm in series with the damper c, which is
+// in parallel with Dahl friction. With the suspension deflection z (travel, extension
+// positive) and the damper's own deflection z_c (rod against housing), the top mount
+// deflects by z − z_c and one force runs through the path:
+//
+//   F_path = k_tm · (z − z_c) = c · z_c' + F_f
+//
+// so z_c' = (k_tm·(z − z_c) − F_f) / c is explicit: no algebraic loop. z_c is a state in
+// kSlip and kStickSlip, F_f a state in kStickSlip. In kStick, z_c ≡ 0 and F_path = k_tm·z.
+template <typename T>
+struct StrutDamperPath {
+  LinearSpring<T> top_mount;
+  LinearDamper<T> damper;
+  DahlFriction<T> friction;
+
+  // Internal states this path adds to a model.
+  static int state_count(DamperState state) {
+    switch (state) {
+      case DamperState::kSlip:
+        return 1;
+      case DamperState::kStick:
+        return 0;
+      case DamperState::kStickSlip:
+        return 2;
+    }
+    return 0;
+  }
+
+  T path_force_N(const T& travel_m, const T& damper_deflection_m) const {
+    return top_mount.force_N(travel_m - damper_deflection_m);
+  }
+
+  // Damper deflection rate z_c' for a given path force and friction force.
+  T damper_rate_m_per_s(const T& path_force_N, const T& friction_force_N) const {
+    return (path_force_N - friction_force_N) / damper.damping_Ns_per_m;
+  }
+};
+
+}  // namespace ridefit::model

@@ -1,0 +1,21 @@
+#pragma once
+
+namespace ridefit::road {
+
+// Road elevation under one tyre and its rate, at a time.
+struct RoadSample {
+  double elevation_m = 0.0;
+  double rate_m_per_s = 0.0;
+};
+
+// The road as one tyre sees it over time: h(t) and dh/dt, continuous in both, so that an
+// adaptive integrator sees a smooth enough input (each implementation documents how).
+class RoadInput {
+ public:
+  virtual ~RoadInput() = default;
+  virtual RoadSample at(double time_s) const = 0;
+  // The length of the excitation; simulations run from 0 to this time by default.
+  virtual double duration_s() const = 0;
+};
+
+}  // namespace ridefit::road

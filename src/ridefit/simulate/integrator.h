@@ -1,0 +1,49 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ridefit/simulate/ode_system.h"
+
+namespace ridefit::simulate {
+
+enum class Method {
+  kCvodeBdf,     // SUNDIALS CVODE: variable-order BDF, Newton with the dense Jacobian
+  kArkodeRk4,    // SUNDIALS ARKODE ERKStep: classic 4-stage RK4 at a fixed step (seed's ode4)
+};
+
+struct IntegratorOptions {
+  Method method = Method::kCvodeBdf;
+  double relative_tolerance = 1e-6;  // CVODE
+  double max_step_s = 0.0;           // CVODE; 0 = unlimited
+  double fixed_step_s = 1e-4;        // RK4
+  long max_steps = 50'000'000;
+};
+
+struct SolverStatistics {
+  std::string method;
+  long steps = 0;
+  long rhs_evaluations = 0;
+  long jacobian_evaluations = 0;
+  long error_test_failures = 0;
+  long nonlinear_convergence_failures = 0;
+};
+
+// States at the requested output times.
+struct Trajectory {
+  std::vector<double> time_s;
+  std::vector<double> states;  // row-major: states[k * n + i] is state i at time_s[k]
+  int state_size = 0;
+  SolverStatistics statistics;
+  const double* state_at(std::size_t k) const { return states.data() + k * state_size; }
+};
+
+// Integrates from x0 at output_times_s.front() through every output time (increasing).
+// Throws RunError, naming the time and the solver's reason, when the solver fails.
+Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
+                     const std::vector<double>& output_times_s, const IntegratorOptions& options);
+
+// "cvode" | "rk4".
+const char* to_string(Method method);
+
+}  // namespace ridefit::simulate

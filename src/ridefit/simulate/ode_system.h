@@ -1,0 +1,22 @@
+#pragma once
+
+namespace ridefit::simulate {
+
+// A first-order system x' = f(t, x) as the integrators see it.
+//
+// Implementations are called from inside SUNDIALS: they must not throw. They return false
+// when the right-hand side cannot be evaluated (a non-finite value), which the integrator
+// turns into a step-size cut or, if that does not help, a RunError naming the time.
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual int size() const = 0;
+  virtual bool derivatives(double t_s, const double* x, double* xdot) const = 0;
+  // Dense Jacobian ∂f/∂x, column-major n×n (SUNDIALS' dense layout).
+  virtual bool jacobian(double t_s, const double* x, double* jacobian_column_major) const = 0;
+  // A typical magnitude per state: absolute tolerance = relative tolerance × magnitude, so
+  // positions in metres and forces in newtons are each judged on their own scale.
+  virtual double typical_magnitude(int state_index) const = 0;
+};
+
+}  // namespace ridefit::simulate

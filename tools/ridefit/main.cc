@@ -1,0 +1,33 @@
+// The `ridefit` command: one program with subcommands. Exit codes: 0 success, 1 a run that
+// failed (solver failure, non-convergence), 2 bad input (files, keys, flags).
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <exception>
+#include <iostream>
+
+#include "ridefit/io/input_error.h"
+#include "subcommands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"ridefit: vehicle vertical dynamics with suspension friction"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ridefit 0.1.0");
+  ridefit::cli::register_subcommands(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const ridefit::InputError& e) {
+    std::cerr << "ridefit: error: " << e.what() << "\n";
+    return 2;
+  } catch (const ridefit::RunError& e) {
+    std::cerr << "ridefit: run failed: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "ridefit: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace ridefit::cli {
+
+// Each subcommand lives in its own file and registers itself here; its callback runs the
+// command and throws InputError / RunError for main() to map to exit codes.
+void register_modes(CLI::App& app);
+void register_simulate(CLI::App& app);
+
+inline void register_subcommands(CLI::App& app) {
+  register_modes(app);
+  register_simulate(app);
+}
+
+}  // namespace ridefit::cli
