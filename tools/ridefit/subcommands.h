@@ -8,10 +8,12 @@ namespace ridefit::cli {
 // command and throws InputError / RunError for main() to map to exit codes.
 void register_modes(CLI::App& app);
 void register_simulate(CLI::App& app);
+void register_friction_study(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
   register_simulate(app);
+  register_friction_study(app);
 }
 
 }  // namespace ridefit::cli

@@ -2,14 +2,15 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ridefit::io {
 
 // One column of a time-series CSV, in SI units.
 struct CsvColumn {
-  std::string name;         // e.g. "body_acc"
-  std::string unit;         // the SI unit after conversion, e.g. "m/s^2"
+  std::string name;  // e.g. "body_acc"
+  std::string unit;  // the SI unit after conversion, e.g. "m/s^2"
   std::vector<double> values;
 };
 
@@ -34,6 +35,9 @@ class CsvTable {
 
   // A `time` column that must be strictly increasing (checked, the row is named).
   const std::vector<double>& time_s() const;
+  // Any column that must be strictly increasing (e.g. `distance` of a road profile). Rows are
+  // numbered as lines of the file: the header is row 1, the first data row is row 2.
+  const std::vector<double>& strictly_increasing(const std::string& name) const;
 
   // Writes atomically (temporary file, then rename): a failed write leaves no file.
   void write(const std::filesystem::path& path) const;

@@ -1,0 +1,29 @@
+#include "ridefit/road/power_law_road.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::road {
+
+void PowerLawRoadParameters::validate() const {
+  if (!(roughness_coefficient_m3 > 0.0) || !std::isfinite(roughness_coefficient_m3)) {
+    throw InputError(fmt::format("key 'roughness_coefficient_m3' is {}, expected a value > 0",
+                                 roughness_coefficient_m3));
+  }
+  // Measured roads lie around 1.5–3.5; outside 0.5–5 the number is almost surely a typo.
+  if (!(waviness >= 0.5 && waviness <= 5.0)) {
+    throw InputError(fmt::format("key 'waviness' is {}, expected a value in [0.5, 5]", waviness));
+  }
+  random.validate();
+}
+
+SpatialProfileRoad make_power_law_road(const PowerLawRoadParameters& parameters) {
+  parameters.validate();
+  const PowerLawSpectrum spectrum = parameters.spectrum();
+  return make_random_road([spectrum](double n) { return spectrum.psd_m3(n); }, parameters.random);
+}
+
+}  // namespace ridefit::road

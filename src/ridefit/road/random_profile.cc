@@ -1,0 +1,116 @@
+#include "ridefit/road/random_profile.h"
+
+#include <fmt/core.h>
+#include <unsupported/Eigen/FFT>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <numbers>
+#include <random>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::road {
+namespace {
+
+void check_spacing(const SpatialBand& band, double spacing_m) {
+  if (!(band.low_cycles_per_m > 0.0) || !(band.high_cycles_per_m > band.low_cycles_per_m) ||
+      !std::isfinite(band.high_cycles_per_m)) {
+    throw InputError(
+        fmt::format("keys 'band_low_cycles_per_m' ({}) and 'band_high_cycles_per_m' ({}): expected "
+                    "0 < low < high",
+                    band.low_cycles_per_m, band.high_cycles_per_m));
+  }
+  if (!(spacing_m > 0.0) || spacing_m > 0.25 / band.high_cycles_per_m) {
+    throw InputError(fmt::format(
+        "key 'sample_spacing_m' is {}, expected 0 < spacing <= 1/(4·band_high_cycles_per_m) = {} "
+        "(at least 4 samples per shortest wave)",
+        spacing_m, 0.25 / band.high_cycles_per_m));
+  }
+}
+
+// The quintic smoothstep: 0 at s = 0 and 1 at s = 1 with zero slope and curvature at both.
+double smoothstep5(double s) { return s * s * s * (s * (6.0 * s - 15.0) + 10.0); }
+
+}  // namespace
+
+RandomProfile random_profile(const std::function<double(double)>& psd_m3, const SpatialBand& band,
+                             double length_m, double spacing_m, std::uint64_t seed) {
+  check_spacing(band, spacing_m);
+  if (!(length_m > 0.0) || !std::isfinite(length_m)) {
+    throw InputError(fmt::format("profile length {} m, expected > 0", length_m));
+  }
+  const auto samples = static_cast<std::size_t>(std::ceil(length_m / spacing_m)) + 1;
+  const auto lowest_octave =
+      static_cast<std::size_t>(std::ceil(8.0 / (band.low_cycles_per_m * spacing_m)));
+  const std::size_t n_fft = std::bit_ceil(std::max({samples, lowest_octave, std::size_t{16}}));
+  const double period_m = static_cast<double>(n_fft) * spacing_m;
+  const double dn = 1.0 / period_m;
+
+  // Harmonic k stands for the bin [n_k − Δn/2, n_k + Δn/2] clipped to the band (midpoint
+  // rule): interior bins have width Δn, the two edge bins less, so that Σ a_k²/2 equals
+  // ∫ G dn over the band up to O(Δn²) instead of an O(Δn) edge bias. Every bin lies below
+  // Nyquist because spacing <= 1/(4·n_high).
+  const auto k_low =
+      static_cast<std::size_t>(std::max(1.0, std::ceil(band.low_cycles_per_m / dn - 0.5)));
+  const auto k_high = static_cast<std::size_t>(std::floor(band.high_cycles_per_m / dn + 0.5));
+
+  // Half spectrum X_k = (N/2)·a_k·e^{iφ_k}; the inverse FFT's 1/N and the Hermitian mirror
+  // turn it into Σ a_k cos(2π k j/N + φ_k).
+  std::vector<std::complex<double>> spectrum(n_fft / 2 + 1, {0.0, 0.0});
+  std::mt19937_64 rng(seed);
+  const double half_n = 0.5 * static_cast<double>(n_fft);
+  for (std::size_t k = k_low; k <= k_high; ++k) {
+    const double n = static_cast<double>(k) * dn;
+    const double bin_low = std::max(n - 0.5 * dn, band.low_cycles_per_m);
+    const double bin_high = std::min(n + 0.5 * dn, band.high_cycles_per_m);
+    const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;  // draw for every k
+    if (!(bin_high > bin_low)) continue;
+    const double amplitude = std::sqrt(2.0 * psd_m3(n) * (bin_high - bin_low));
+    spectrum[k] = std::polar(half_n * amplitude, 2.0 * std::numbers::pi * u);
+  }
+  Eigen::FFT<double> fft;
+  fft.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+  std::vector<double> elevation;
+  fft.inv(elevation, spectrum, static_cast<Eigen::Index>(n_fft));
+  elevation.resize(samples);
+  return {std::move(elevation), spacing_m, dn, period_m};
+}
+
+void RandomRoadParameters::validate() const {
+  if (!(speed_m_per_s > 0.0) || !std::isfinite(speed_m_per_s)) {
+    throw InputError(fmt::format("key 'speed_m_per_s' is {}, expected a value > 0", speed_m_per_s));
+  }
+  if (!(duration_s > 0.0) || !std::isfinite(duration_s)) {
+    throw InputError(fmt::format("key 'duration_s' is {}, expected a value > 0", duration_s));
+  }
+  check_spacing(band, sample_spacing_m);
+  if (!(fade_in_m >= 0.0) || !std::isfinite(fade_in_m)) {
+    throw InputError(fmt::format("key 'fade_in_m' is {}, expected a value >= 0", fade_in_m));
+  }
+}
+
+SpatialProfileRoad make_random_road(const std::function<double(double)>& psd_m3,
+                                    const RandomRoadParameters& parameters) {
+  parameters.validate();
+  const double length_m = parameters.speed_m_per_s * parameters.duration_s;
+  RandomProfile profile = random_profile(psd_m3, parameters.band, length_m,
+                                         parameters.sample_spacing_m, parameters.seed);
+  std::vector<double>& h = profile.elevation_m;
+  double start_slope = std::numeric_limits<double>::quiet_NaN();
+  if (parameters.fade_in_m > 0.0) {
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      const double x = static_cast<double>(k) * profile.spacing_m;
+      if (x >= parameters.fade_in_m) break;
+      h[k] *= smoothstep5(x / parameters.fade_in_m);
+    }
+    start_slope = 0.0;
+  }
+  return SpatialProfileRoad(UniformSpline(h, 0.0, profile.spacing_m, start_slope),
+                            parameters.speed_m_per_s, parameters.duration_s);
+}
+
+}  // namespace ridefit::road

@@ -1,0 +1,50 @@
+#include "ridefit/signal/spectrum_check.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::signal {
+
+void check_spectrum_band(std::string_view caller, std::span<const double> frequency_Hz,
+                         std::span<const double> psd, double low_Hz, double high_Hz) {
+  if (frequency_Hz.size() != psd.size()) {
+    throw InputError(fmt::format("{}: {} frequencies but {} PSD values; they must pair up", caller,
+                                 frequency_Hz.size(), psd.size()));
+  }
+  if (frequency_Hz.size() < 2) {
+    throw InputError(fmt::format("{}: the spectrum has {} points; it needs at least 2", caller,
+                                 frequency_Hz.size()));
+  }
+  for (std::size_t i = 0; i < frequency_Hz.size(); ++i) {
+    if (!std::isfinite(frequency_Hz[i]) || (i > 0 && !(frequency_Hz[i] > frequency_Hz[i - 1]))) {
+      throw InputError(fmt::format(
+          "{}: frequency {} ({} Hz) is not finite or not above the previous one; frequencies "
+          "must be finite and strictly increasing",
+          caller, i, frequency_Hz[i]));
+    }
+    if (!std::isfinite(psd[i]) || psd[i] < 0.0) {
+      throw InputError(fmt::format(
+          "{}: PSD value {} (at {} Hz) is {}; PSD values must be finite and non-negative", caller,
+          i, frequency_Hz[i], psd[i]));
+    }
+  }
+  const double first = frequency_Hz.front();
+  const double last = frequency_Hz.back();
+  const double slack = 1e-9 * std::max(std::abs(first), std::abs(last));
+  if (!std::isfinite(low_Hz) || !std::isfinite(high_Hz) || !(low_Hz < high_Hz)) {
+    throw InputError(
+        fmt::format("{}: band [{}, {}] Hz is invalid; it needs finite edges with low < high",
+                    caller, low_Hz, high_Hz));
+  }
+  if (low_Hz < first - slack || high_Hz > last + slack) {
+    throw InputError(fmt::format(
+        "{}: band [{}, {}] Hz reaches outside the spectrum [{}, {}] Hz; choose a band inside "
+        "it (raise the sample rate for higher frequencies, lengthen segments for lower ones)",
+        caller, low_Hz, high_Hz, first, last));
+  }
+}
+
+}  // namespace ridefit::signal

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace ridefit::signal {
+
+// Detrending applied to every segment before windowing.
+enum class Detrend {
+  kNone,
+  kMean,    // removes the segment's mean (DC would otherwise leak into the low bins)
+  kLinear,  // removes the segment's least-squares straight line (drift, integrated signals)
+};
+
+// Segment length: give at most one of segment_length_samples and segment_length_s (seconds
+// are rounded to the nearest sample). With neither, the signal is split into 8 segments at the
+// requested overlap, L = floor(N / (8 − 7·overlap)), MATLAB pwelch's default.
+//
+// A segment longer than the signal is an InputError, not clamped: clamping would silently
+// coarsen the frequency resolution the caller asked for. The message states the longest
+// segment the signal allows.
+struct WelchOptions {
+  std::size_t segment_length_samples = 0;  // 0 = not given
+  double segment_length_s = 0.0;           // 0 = not given
+  double overlap_fraction = 0.5;           // in [0, 1); overlap = floor(overlap_fraction·L)
+  Detrend detrend = Detrend::kMean;
+};
+
+// One-sided power spectral density estimate.
+struct PowerSpectralDensity {
+  std::vector<double> frequency_Hz;  // k·fs/L, k = 0 … floor(L/2)
+  std::vector<double> psd;           // [signal unit]²/Hz
+  double sample_rate_Hz = 0.0;
+  double frequency_resolution_Hz = 0.0;  // fs/L
+  std::size_t segment_length_samples = 0;
+  std::size_t segment_count = 0;  // kept for confidence bands (equivalent degrees of freedom)
+};
+
+// Welch's averaged, modified periodogram of a uniformly sampled signal.
+//
+// Each segment x_j of length L (hop L − overlap; trailing samples that do not fill a segment
+// are dropped) is detrended, multiplied by the periodic Hann window
+// w[n] = 0.5 − 0.5·cos(2πn/L), and transformed (Eigen FFT). The estimate is
+//
+//   P[k] = c_k · mean_j |X_j[k]|² / (fs · Σ w[n]²),
+//
+// with c_k = 2 for all bins but DC and (for even L) Nyquist, c_k = 1 there: the one-sided
+// density. Scaling by fs·Σw² makes Σ_k P[k]·Δf equal the mean of Σ(w·x)²/Σw² over segments,
+// i.e. ∫PSD df equals the (detrended) signal's variance (Parseval).
+//
+// Throws InputError for an empty signal, a non-finite sample, sample_rate_Hz ≤ 0 or
+// non-finite, overlap outside [0, 1), both or invalid segment lengths, a segment shorter
+// than 2 samples or longer than the signal.
+PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate_Hz,
+                               const WelchOptions& options = {});
+PowerSpectralDensity welch_psd(const Eigen::Ref<const Eigen::VectorXd>& signal,
+                               double sample_rate_Hz, const WelchOptions& options = {});
+
+// "none" | "mean" | "linear".
+const char* to_string(Detrend detrend);
+// Inverse of to_string; throws InputError naming the accepted words.
+Detrend parse_detrend(std::string_view name);
+
+}  // namespace ridefit::signal

@@ -1,0 +1,196 @@
+// Smoke tests of every subcommand and the bad-input contract: a clear message, exit code 2
+// and no output file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/passat.h"
+
+namespace ridefit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run_cli(const std::string& arguments) {
+  const std::string command = std::string(RIDEFIT_CLI) + " " + arguments + " 2>&1";
+  CliRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return run;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.output += buffer.data();
+  const int status = pclose(pipe);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ridefit_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path) << text;
+    return path.string();
+  }
+  std::string model() const { return testing::dataset("vehicles/passat_b8_front.yaml"); }
+  std::string short_sweep() const {
+    return write("sweep.yaml",
+                 "type: log_sweep\ninitial_amplitude_m: 0.002\nduration_s: 2\n");
+  }
+  // A copy of the Passat file with one line replaced (or removed when `line` is empty).
+  std::string model_with(const std::string& key, const std::string& line) const {
+    std::ifstream in(model());
+    std::string text, l;
+    while (std::getline(in, l)) {
+      if (l.rfind(key + ":", 0) == 0) {
+        if (!line.empty()) text += line + "\n";
+      } else {
+        text += l + "\n";
+      }
+    }
+    return write("model.yaml", text);
+  }
+  void expect_bad_input(const std::string& arguments, const std::string& must_mention) {
+    const fs::path out = dir_ / "out.csv";
+    const CliRun run = run_cli(arguments + " -o " + out.string());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find(must_mention), std::string::npos)
+        << "message should mention '" << must_mention << "':\n"
+        << run.output;
+    EXPECT_FALSE(fs::exists(out)) << "no output file on bad input";
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, HelpOnEveryLevel) {
+  for (const std::string level : {"", "modes ", "simulate ", "friction-study "}) {
+    const CliRun run = run_cli(level + "--help");
+    EXPECT_EQ(run.exit_code, 0) << level;
+    EXPECT_NE(run.output.find("Usage"), std::string::npos) << level;
+  }
+}
+
+TEST_F(Cli, ModesPrintsTheFourSeedFrequencies) {
+  const CliRun run = run_cli("modes " + model() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("\"slip\""), std::string::npos);
+  EXPECT_NE(run.output.find("\"stick\""), std::string::npos);
+  EXPECT_NE(run.output.find("natural_frequency_Hz"), std::string::npos);
+  const CliRun text = run_cli("modes " + model() + " --state stick");
+  ASSERT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.output.find("3.4"), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("21.4"), std::string::npos) << text.output;
+}
+
+TEST_F(Cli, SimulateWritesUnitAnnotatedCsvAndJsonStatistics) {
+  const fs::path out = dir_ / "run.csv";
+  const CliRun run = run_cli("simulate " + model() + " " + short_sweep() + " -o " + out.string() +
+                          " --rate 200 --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("\"steps\""), std::string::npos);
+  EXPECT_NE(run.output.find("body_acc_m_per_s2"), std::string::npos);
+  std::ifstream in(out);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "time[s],road[m],body_acc[m/s^2],wheel_acc[m/s^2],travel[m],tyre_force[N],"
+            "damper_force[N],friction_force[N],top_mount_deflection[m],stuck[1]");
+  std::size_t rows = 0;
+  std::string line;
+  while (std::getline(in, line)) ++rows;
+  EXPECT_EQ(rows, 401u);  // 2 s at 200 Hz, both ends
+}
+
+TEST_F(Cli, FrictionStudyRunsAndWritesPsds) {
+  const CliRun run = run_cli("friction-study " + model() + " " + short_sweep() +
+                          " --coulomb-forces 0,60 --rate 200 -o " + dir_.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir_ / "sweep_psd.csv"));
+  EXPECT_NE(run.output.find("body_pk"), std::string::npos);
+}
+
+TEST_F(Cli, MissingKeyIsNamed) {
+  expect_bad_input("simulate " + model_with("sprung_mass_kg", "") + " " + short_sweep(),
+                   "sprung_mass_kg");
+}
+
+TEST_F(Cli, UnknownKeyIsNamed) {
+  expect_bad_input("simulate " + model_with("damping_Ns_per_m", "damping_Ns_per_m: 887\ndampnig: 3") +
+                       " " + short_sweep(),
+                   "dampnig");
+}
+
+TEST_F(Cli, NonPositiveMassIsRejected) {
+  expect_bad_input("simulate " + model_with("sprung_mass_kg", "sprung_mass_kg: -385") + " " +
+                       short_sweep(),
+                   "sprung_mass_kg");
+  expect_bad_input("simulate " + model_with("unsprung_mass_kg", "unsprung_mass_kg: 0") + " " +
+                       short_sweep(),
+                   "unsprung_mass_kg");
+}
+
+TEST_F(Cli, TextWhereANumberBelongsIsRejected) {
+  expect_bad_input("simulate " + model_with("tyre_stiffness_N_per_m", "tyre_stiffness_N_per_m: stiff") +
+                       " " + short_sweep(),
+                   "tyre_stiffness_N_per_m");
+}
+
+TEST_F(Cli, BadExcitationAndFlagsAreRejected) {
+  expect_bad_input("simulate " + model() + " " + write("e.yaml", "type: warp_drive\n"), "type");
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --set coulomb_force_N=abc",
+                   "coulomb_force_N");
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --rate -5", "rate");
+  expect_bad_input("simulate " + model() + " /nonexistent/exc.yaml", "exc.yaml");
+}
+
+TEST_F(Cli, BadMeasuredRoadCsvIsRejectedWithoutOutput) {
+  const std::string yaml_header = "type: measured\nfile: ";
+  const auto measured = [&](const std::string& csv_name, const std::string& csv) {
+    write(csv_name, csv);
+    return write(csv_name + ".yaml", yaml_header + csv_name + "\n");
+  };
+  expect_bad_input("simulate " + model() + " " + measured("empty.csv", ""), "empty.csv");
+  expect_bad_input("simulate " + model() + " " + measured("nounit.csv", "time,road[m]\n0,0\n0.1,0\n"),
+                   "nounit.csv");
+  expect_bad_input("simulate " + model() + " " + measured("unit.csv", "time[s],road[furlong]\n0,0\n0.1,0\n"),
+                   "furlong");
+  expect_bad_input("simulate " + model() + " " +
+                       measured("time.csv", "time[s],road[m]\n0,0\n0.1,0\n0.1,0\n0.05,0\n"),
+                   "time.csv");
+  expect_bad_input("simulate " + model() + " " + measured("bad.csv", "time[s],road[m]\n0,0\n0.1,x\n"),
+                   "bad.csv");
+}
+
+TEST_F(Cli, FailedRunKeepsAnExistingOutput) {
+  // An unstable fixed step fails (exit 1) and must not replace a good file.
+  const fs::path out = dir_ / "keep.csv";
+  std::ofstream(out) << "precious\n";
+  const CliRun run = run_cli("simulate " + model() + " " + short_sweep() +
+                          " --method rk4 --step 0.005 -o " + out.string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("failed at t ="), std::string::npos) << run.output;
+  std::ifstream in(out);
+  std::string content;
+  std::getline(in, content);
+  EXPECT_EQ(content, "precious");
+}
+
+}  // namespace
+}  // namespace ridefit

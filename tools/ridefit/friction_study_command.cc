@@ -1,0 +1,141 @@
+// ridefit friction-study MODEL.yaml EXCITATION.yaml... [--coulomb-forces LIST] [-o DIR]
+// The seed's Section 3.2 study: the stick/slip quarter car at several Coulomb forces.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "command_options.h"
+#include "ridefit/io/csv_table.h"
+#include "ridefit/io/input_error.h"
+#include "ridefit/io/quarter_car_file.h"
+#include "ridefit/road/excitation_file.h"
+#include "ridefit/study/friction_study.h"
+#include "subcommands.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct FrictionStudyFlags {
+  std::string model_file;
+  std::vector<std::string> excitation_files;
+  std::vector<double> coulomb_forces_N = {0.0, 12.0, 30.0, 60.0, 120.0};
+  std::string output_dir;
+  std::vector<std::string> overrides;
+  double output_rate_Hz = 1000.0;
+  bool json = false;
+  SolverFlags solver;
+};
+
+std::string force_label(double force_N) { return fmt::format("Fc{:g}N", force_N); }
+
+void write_psds(const study::FrictionStudyResult& result, const std::filesystem::path& path) {
+  io::CsvTable table;
+  table.add("frequency", "Hz", result.frequency_Hz);
+  for (const auto& c : result.cases) {
+    table.add("body_acc_psd_" + force_label(c.coulomb_force_N), "(m/s^2)^2/Hz", c.body_psd);
+  }
+  for (const auto& c : result.cases) {
+    table.add("wheel_acc_psd_" + force_label(c.coulomb_force_N), "(m/s^2)^2/Hz", c.wheel_psd);
+  }
+  table.write(path);
+}
+
+void run(const FrictionStudyFlags& flags) {
+  const auto model_file =
+      io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), "stick_slip");
+  for (double f : flags.coulomb_forces_N) {
+    if (!(f >= 0.0)) {
+      throw InputError(fmt::format("--coulomb-forces: {} N is negative; forces are >= 0", f));
+    }
+  }
+  if (!flags.output_dir.empty()) std::filesystem::create_directories(flags.output_dir);
+
+  study::FrictionStudyOptions options;
+  options.coulomb_forces_N = flags.coulomb_forces_N;
+  options.simulation.output_rate_Hz = flags.output_rate_Hz;
+  options.simulation.integrator = flags.solver.options();
+
+  nlohmann::json summary = {{"model", flags.model_file}, {"excitations", nlohmann::json::array()}};
+  for (const auto& excitation_file : flags.excitation_files) {
+    const auto road = road::load_excitation(excitation_file);
+    std::size_t done = 0;
+    const auto result = study::run_friction_study(
+        model_file.parameters, *road, options, [&](const study::FrictionCase& c) {
+          std::cerr << fmt::format("\r{}: {}/{} cases (Fc = {:g} N done)   ", excitation_file,
+                                   ++done, flags.coulomb_forces_N.size(), c.coulomb_force_N)
+                    << std::flush;
+        });
+    std::cerr << "\n";
+    const std::string stem = std::filesystem::path(excitation_file).stem().string();
+    std::string psd_file;
+    if (!flags.output_dir.empty()) {
+      psd_file = (std::filesystem::path(flags.output_dir) / (stem + "_psd.csv")).string();
+      write_psds(result, psd_file);
+    }
+    nlohmann::json cases = nlohmann::json::array();
+    if (!flags.json) {
+      std::cout << fmt::format("\n{} ({})\n", stem, excitation_file);
+      std::cout << fmt::format("{:>7} {:>11} {:>12} {:>9} {:>9} {:>12} {:>12} {:>8}\n",
+                               "Fc[N]", "body_pk[Hz]", "wheel_pk[Hz]", "body_rms", "wheel_rms",
+                               "body_1.0-1.6", "body_2.8-4.2", "stuck[%]");
+    }
+    for (const auto& c : result.cases) {
+      cases.push_back({{"coulomb_force_N", c.coulomb_force_N},
+                       {"body_peak_Hz", c.body_peak_Hz},
+                       {"wheel_peak_Hz", c.wheel_peak_Hz},
+                       {"body_acc_rms_m_per_s2", c.body_acc_rms_m_per_s2},
+                       {"wheel_acc_rms_m_per_s2", c.wheel_acc_rms_m_per_s2},
+                       {"body_slip_band_rms_m_per_s2", c.body_slip_band_rms_m_per_s2},
+                       {"body_stick_band_rms_m_per_s2", c.body_stick_band_rms_m_per_s2},
+                       {"stuck_share", c.stuck_share},
+                       {"solver", to_json(c.statistics)}});
+      if (!flags.json) {
+        std::cout << fmt::format(
+            "{:>7g} {:>11.2f} {:>12.2f} {:>9.4f} {:>9.4f} {:>12.4f} {:>12.4f} {:>8.1f}\n",
+            c.coulomb_force_N, c.body_peak_Hz, c.wheel_peak_Hz, c.body_acc_rms_m_per_s2,
+            c.wheel_acc_rms_m_per_s2, c.body_slip_band_rms_m_per_s2,
+            c.body_stick_band_rms_m_per_s2, 100.0 * c.stuck_share);
+      }
+    }
+    if (!flags.json && !psd_file.empty()) std::cout << "PSDs: " << psd_file << "\n";
+    summary["excitations"].push_back(
+        {{"excitation", excitation_file}, {"psd_file", psd_file}, {"cases", cases}});
+  }
+  if (!flags.json) {
+    std::cout << "\nbody_pk: body-acceleration PSD peak in 0.5-6 Hz; wheel_pk: wheel PSD peak in "
+                 "8-30 Hz;\nRMS in m/s^2; body_1.0-1.6 / body_2.8-4.2: body RMS in the slip / stick band; stuck: share "
+                 "of time with |F_f| < 0.95 Fc.\n";
+  }
+  if (flags.json) std::cout << summary.dump(2) << "\n";
+}
+
+}  // namespace
+
+void register_friction_study(CLI::App& app) {
+  auto flags = std::make_shared<FrictionStudyFlags>();
+  CLI::App* command = app.add_subcommand(
+      "friction-study",
+      "Seed 000 Section 3.2: the stick/slip quarter car at several Coulomb forces");
+  command->add_option("model", flags->model_file, "Model file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("excitations", flags->excitation_files, "Excitation files (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--coulomb-forces", flags->coulomb_forces_N, "Coulomb forces [N]")
+      ->delimiter(',')
+      ->capture_default_str();
+  command->add_option("-o,--output-dir", flags->output_dir,
+                      "Directory for the PSD CSV files (one per excitation)");
+  command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--set", flags->overrides, "Override a model key (repeatable)");
+  command->add_flag("--json", flags->json, "Print the results as JSON");
+  flags->solver.add_to(*command);
+  command->callback([flags] { run(*flags); });
+}
+
+}  // namespace ridefit::cli

@@ -1,0 +1,130 @@
+// ridefit simulate MODEL.yaml EXCITATION.yaml -o out.csv [--json]
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "command_options.h"
+#include "ridefit/io/csv_table.h"
+#include "ridefit/io/quarter_car_file.h"
+#include "ridefit/road/excitation_file.h"
+#include "ridefit/simulate/quarter_car_simulation.h"
+#include "subcommands.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct SimulateFlags {
+  std::string model_file;
+  std::string excitation_file;
+  std::string output_file;
+  std::string damper_state;
+  std::vector<std::string> overrides;
+  double output_rate_Hz = 1000.0;
+  double duration_s = 0.0;
+  bool json = false;
+  SolverFlags solver;
+};
+
+io::CsvTable to_table(const simulate::QuarterCarResponse& r) {
+  io::CsvTable table;
+  table.add("time", "s", r.time_s);
+  table.add("road", "m", r.road_m);
+  table.add("body_acc", "m/s^2", r.body_acc_m_per_s2);
+  table.add("wheel_acc", "m/s^2", r.wheel_acc_m_per_s2);
+  table.add("travel", "m", r.travel_m);
+  table.add("tyre_force", "N", r.tyre_force_N);
+  table.add("damper_force", "N", r.damper_force_N);
+  table.add("friction_force", "N", r.friction_force_N);
+  table.add("top_mount_deflection", "m", r.top_mount_deflection_m);
+  table.add("stuck", "1", r.stuck);
+  return table;
+}
+
+void run(const SimulateFlags& flags) {
+  const auto model_file =
+      io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), flags.damper_state);
+  const auto road = road::load_excitation(flags.excitation_file);
+  const model::QuarterCar car = model_file.make_model();
+
+  simulate::SimulationOptions options;
+  options.output_rate_Hz = flags.output_rate_Hz;
+  options.duration_s = flags.duration_s;
+  options.integrator = flags.solver.options();
+  const auto start = std::chrono::steady_clock::now();
+  const auto response = simulate::simulate(car, *road, options);
+  const double elapsed_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (!flags.output_file.empty()) to_table(response).write(flags.output_file);
+
+  double stuck_share = 0.0;
+  for (double s : response.stuck) stuck_share += s;
+  stuck_share /= static_cast<double>(response.stuck.size());
+  double travel_peak = 0.0;
+  for (double t : response.travel_m) travel_peak = std::max(travel_peak, std::abs(t));
+
+  if (flags.json) {
+    nlohmann::json summary = {
+        {"model", flags.model_file},
+        {"excitation", flags.excitation_file},
+        {"damper_state", model::to_string(car.damper_state())},
+        {"output", flags.output_file},
+        {"duration_s", response.time_s.back()},
+        {"samples", response.time_s.size()},
+        {"output_rate_Hz", flags.output_rate_Hz},
+        {"wall_time_s", elapsed_s},
+        {"solver", to_json(response.statistics)},
+        {"rms",
+         {{"body_acc_m_per_s2", rms(response.body_acc_m_per_s2)},
+          {"wheel_acc_m_per_s2", rms(response.wheel_acc_m_per_s2)},
+          {"travel_m", rms(response.travel_m)},
+          {"tyre_force_N", rms(response.tyre_force_N)},
+          {"friction_force_N", rms(response.friction_force_N)}}},
+        {"travel_peak_m", travel_peak},
+        {"stuck_share", stuck_share}};
+    std::cout << summary.dump(2) << "\n";
+  } else {
+    std::cout << fmt::format(
+        "{} over {}: {} samples, {} steps ({}), body_acc RMS {:.4g} m/s^2, wheel_acc RMS "
+        "{:.4g} m/s^2, stuck {:.1f} % of the time{}\n",
+        model::to_string(car.damper_state()), flags.excitation_file, response.time_s.size(),
+        response.statistics.steps, response.statistics.method,
+        rms(response.body_acc_m_per_s2), rms(response.wheel_acc_m_per_s2), 100.0 * stuck_share,
+        flags.output_file.empty() ? "" : ", written to " + flags.output_file);
+  }
+}
+
+}  // namespace
+
+void register_simulate(CLI::App& app) {
+  auto flags = std::make_shared<SimulateFlags>();
+  CLI::App* command = app.add_subcommand(
+      "simulate", "Simulate a quarter car over an excitation and write every channel to CSV");
+  command->add_option("model", flags->model_file, "Model file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("excitation", flags->excitation_file, "Excitation file (YAML with `type`)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", flags->output_file, "Output CSV (written atomically)");
+  command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--duration", flags->duration_s,
+                      "Simulated time [s] (default: the excitation's duration)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--damper-state", flags->damper_state,
+                      "Override the model's damper_state: slip, stick or stick_slip")
+      ->check(CLI::IsMember({"slip", "stick", "stick_slip"}));
+  command->add_option("--set", flags->overrides,
+                      "Override a model key, e.g. --set coulomb_force_N=30 (repeatable)");
+  command->add_flag("--json", flags->json, "Print a JSON summary (solver statistics, RMS values)");
+  flags->solver.add_to(*command);
+  command->callback([flags] { run(*flags); });
+}
+
+}  // namespace ridefit::cli
