@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -180,6 +181,30 @@ TEST_F(CsvTableTest, EveryBadFileIsAnInputErrorNamingFileRowAndColumn) {
     expect_input_error([&] { CsvTable::read(path); }, fragments);
   }
   expect_input_error([&] { CsvTable::read(dir_ / "absent.csv"); }, {"absent.csv", "not found"});
+}
+
+TEST_F(CsvTableTest, SpectraAndAngularUnitsConvertToo) {
+  const auto path = write("psd.csv",
+                          "frequency[Hz],body_acc_psd[g^2/Hz],road_psd[mm^2/Hz],pitch_acc[deg/s^2],"
+                          "damping[Ns/m]\n1,2,3,180,1500\n");
+  const CsvTable table = CsvTable::read(path);
+  EXPECT_DOUBLE_EQ(table.column("body_acc_psd").values[0], 2.0 * 9.80665 * 9.80665);
+  EXPECT_EQ(table.column("body_acc_psd").unit, "(m/s^2)^2/Hz");
+  EXPECT_DOUBLE_EQ(table.column("road_psd").values[0], 3e-6);
+  EXPECT_DOUBLE_EQ(table.column("pitch_acc").values[0], 3.14159265358979323846);
+  EXPECT_EQ(table.column("pitch_acc").unit, "rad/s^2");
+  EXPECT_DOUBLE_EQ(table.column("damping").values[0], 1500.0);
+}
+
+TEST(CsvTableAdd, RejectsUnitsReadCannotReadDuplicatesAndRaggedColumns) {
+  CsvTable table;
+  table.add("time", "ms", {0.0, 5.0});
+  EXPECT_DOUBLE_EQ(table.time_s()[1], 0.005);
+  EXPECT_THROW(table.add("x", "furlong", {1.0, 2.0}), std::invalid_argument);
+  EXPECT_THROW(table.add("time", "s", {1.0, 2.0}), std::invalid_argument);
+  EXPECT_THROW(table.add("road", "m", {1.0}), std::invalid_argument);
+  table.add("psd", "(m/s^2)^2/Hz", {1.0, 2.0});
+  EXPECT_EQ(table.columns().size(), 2u);
 }
 
 TEST(CsvUnits, UnknownUnitListsTheAcceptedOnes) {

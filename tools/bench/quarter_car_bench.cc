@@ -1,6 +1,6 @@
 // Stick/slip quarter car (Passat corner, Fc = 60 N) over 60 s of ISO 8608 class A road at
 // 50 km/h, output at 1 kHz: CVODE at rtol 1e-6, and RK4 at the largest of a few steps that
-// matches CVODE's body-acceleration RMS within 0.5 %. The road is generated once outside
+// matches CVODE's body-acceleration RMS within 0.5 % (rms_diff_pct). The road is generated once outside
 // the timed loop (tools/bench/road_bench.cc times the generation).
 #include <benchmark/benchmark.h>
 
@@ -74,8 +74,9 @@ BENCHMARK(BM_StickSlipClassA60s_Cvode)->Unit(benchmark::kMillisecond)->MinTime(2
 void BM_StickSlipClassA60s_Rk4(benchmark::State& state) {
   run(state, Method::kArkodeRk4, static_cast<double>(state.range(0)) * 1e-6);
 }
-// Steps in µs.
-BENCHMARK(BM_StickSlipClassA60s_Rk4)->Arg(100)->Arg(200)->Arg(300)->Unit(benchmark::kMillisecond);
+// Steps in µs: 100 µs is unstable on this road (sliding at wheel-hop speeds makes
+// ∂Ḟ/∂F ≈ −σ0·|ż_c|/Fc reach −25 000 1/s), 50 µs is stable.
+BENCHMARK(BM_StickSlipClassA60s_Rk4)->Arg(50)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -25,9 +25,12 @@ struct KnownUnit {
   std::string_view si_unit;
 };
 
-// The units a CSV header may carry. Factors are exact by definition (g is the standard
-// gravity of ISO 80000-3).
-constexpr std::array<KnownUnit, 21> kUnits{{
+// The units a CSV header may carry: the channels of design.md (time, displacements,
+// accelerations incl. pitch, forces, the `stuck` flag), element rates, and the spectra the
+// tools write. Factors are exact by definition (g is the standard gravity of ISO 80000-3).
+constexpr double kG = 9.80665;
+constexpr double kDeg = 0.017453292519943295;  // π/180
+constexpr std::array<KnownUnit, 30> kUnits{{
     {"s", 1.0, "s"},
     {"ms", 1e-3, "s"},
     {"m", 1.0, "m"},
@@ -35,21 +38,31 @@ constexpr std::array<KnownUnit, 21> kUnits{{
     {"m/s", 1.0, "m/s"},
     {"mm/s", 1e-3, "m/s"},
     {"m/s^2", 1.0, "m/s^2"},
-    {"g", 9.80665, "m/s^2"},
+    {"g", kG, "m/s^2"},
     {"N", 1.0, "N"},
     {"kN", 1e3, "N"},
     {"N/m", 1.0, "N/m"},
     {"N/mm", 1e3, "N/m"},
+    {"Ns/m", 1.0, "Ns/m"},
     {"Hz", 1.0, "Hz"},
     {"rad", 1.0, "rad"},
-    {"deg", 0.017453292519943295, "rad"},  // π/180
-    // Spectral densities, as written by the PSD outputs.
-    {"(m/s^2)^2/Hz", 1.0, "(m/s^2)^2/Hz"},
-    {"g^2/Hz", 9.80665 * 9.80665, "(m/s^2)^2/Hz"},
-    {"m^2/Hz", 1.0, "m^2/Hz"},
-    {"N^2/Hz", 1.0, "N^2/Hz"},
+    {"deg", kDeg, "rad"},
+    {"rad/s", 1.0, "rad/s"},
+    {"deg/s", kDeg, "rad/s"},
+    {"rad/s^2", 1.0, "rad/s^2"},
+    {"deg/s^2", kDeg, "rad/s^2"},
     {"1", 1.0, "1"},
     {"-", 1.0, "1"},
+    // Power spectral densities (one-sided): acceleration, displacement, angular
+    // acceleration over frequency; road displacement over spatial frequency (m^3).
+    {"(m/s^2)^2/Hz", 1.0, "(m/s^2)^2/Hz"},
+    {"g^2/Hz", kG* kG, "(m/s^2)^2/Hz"},
+    {"m^2/Hz", 1.0, "m^2/Hz"},
+    {"mm^2/Hz", 1e-6, "m^2/Hz"},
+    {"(rad/s^2)^2/Hz", 1.0, "(rad/s^2)^2/Hz"},
+    {"m^3", 1.0, "m^3"},
+    {"cycles/m", 1.0, "cycles/m"},
+    {"N^2/Hz", 1.0, "N^2/Hz"},
 }};
 
 std::optional<UnitConversion> find_unit(std::string_view unit) {
@@ -217,7 +230,15 @@ void CsvTable::add(std::string name, std::string unit, std::vector<double> value
     throw std::invalid_argument(fmt::format("CsvTable::add: column {} has {} values, expected {}",
                                             name, values.size(), rows()));
   }
-  const UnitConversion conversion = unit_to_si(unit);
+  const std::optional<UnitConversion> found = find_unit(unit);
+  // A unit read() would reject makes a file ridefit cannot read back: a programming error.
+  if (!found) {
+    throw std::invalid_argument(fmt::format(
+        "CsvTable::add: column {} has unit '{}', which is not one of: {} (extend kUnits in "
+        "csv_table.cc)",
+        name, unit, accepted_units()));
+  }
+  const UnitConversion& conversion = *found;
   if (conversion.factor_to_si != 1.0) {
     for (double& v : values) v *= conversion.factor_to_si;
   }

@@ -25,6 +25,9 @@ class CsvTable {
   CsvTable() = default;
   explicit CsvTable(std::filesystem::path source) : source_(std::move(source)) {}
 
+  // Converts `values` from `unit` to SI. The unit must be one read() accepts (the list is in
+  // csv_table.cc), so every written file reads back; otherwise, and for a duplicate name or a
+  // length that differs from the other columns, std::invalid_argument (a programming error).
   void add(std::string name, std::string unit, std::vector<double> values);
   bool has(const std::string& name) const;
   // Throws InputError naming the file and the columns that do exist.

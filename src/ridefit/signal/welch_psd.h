@@ -52,7 +52,7 @@ struct PowerSpectralDensity {
 // density. Scaling by fs·Σw² makes Σ_k P[k]·Δf equal the mean of Σ(w·x)²/Σw² over segments,
 // i.e. ∫PSD df equals the (detrended) signal's variance (Parseval).
 //
-// Throws InputError for an empty signal, a non-finite sample, sample_rate_Hz ≤ 0 or
+// Throws InputError for a signal under 2 samples, a non-finite sample, sample_rate_Hz ≤ 0 or
 // non-finite, overlap outside [0, 1), both or invalid segment lengths, a segment shorter
 // than 2 samples or longer than the signal.
 PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate_Hz,
