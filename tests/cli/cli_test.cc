@@ -37,7 +37,8 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("ridefit_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("ridefit_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -50,8 +51,7 @@ class Cli : public ::testing::Test {
   }
   std::string model() const { return testing::dataset("vehicles/passat_b8_front.yaml"); }
   std::string short_sweep() const {
-    return write("sweep.yaml",
-                 "type: log_sweep\ninitial_amplitude_m: 0.002\nduration_s: 2\n");
+    return write("sweep.yaml", "type: log_sweep\ninitial_amplitude_m: 0.002\nduration_s: 2\n");
   }
   // A copy of the Passat file with one line replaced (or removed when `line` is empty).
   std::string model_with(const std::string& key, const std::string& line) const {
@@ -102,7 +102,7 @@ TEST_F(Cli, ModesPrintsTheFourSeedFrequencies) {
 TEST_F(Cli, SimulateWritesUnitAnnotatedCsvAndJsonStatistics) {
   const fs::path out = dir_ / "run.csv";
   const CliRun run = run_cli("simulate " + model() + " " + short_sweep() + " -o " + out.string() +
-                          " --rate 200 --json");
+                             " --rate 200 --json");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("\"steps\""), std::string::npos);
   EXPECT_NE(run.output.find("body_acc_m_per_s2"), std::string::npos);
@@ -120,7 +120,7 @@ TEST_F(Cli, SimulateWritesUnitAnnotatedCsvAndJsonStatistics) {
 
 TEST_F(Cli, FrictionStudyRunsAndWritesPsds) {
   const CliRun run = run_cli("friction-study " + model() + " " + short_sweep() +
-                          " --coulomb-forces 0,60 --rate 200 -o " + dir_.string());
+                             " --coulomb-forces 0,60 --rate 200 -o " + dir_.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(fs::exists(dir_ / "sweep_psd.csv"));
   EXPECT_NE(run.output.find("body_pk"), std::string::npos);
@@ -132,23 +132,25 @@ TEST_F(Cli, MissingKeyIsNamed) {
 }
 
 TEST_F(Cli, UnknownKeyIsNamed) {
-  expect_bad_input("simulate " + model_with("damping_Ns_per_m", "damping_Ns_per_m: 887\ndampnig: 3") +
-                       " " + short_sweep(),
+  expect_bad_input("simulate " +
+                       model_with("damping_Ns_per_m", "damping_Ns_per_m: 887\ndampnig: 3") + " " +
+                       short_sweep(),
                    "dampnig");
 }
 
 TEST_F(Cli, NonPositiveMassIsRejected) {
-  expect_bad_input("simulate " + model_with("sprung_mass_kg", "sprung_mass_kg: -385") + " " +
-                       short_sweep(),
-                   "sprung_mass_kg");
-  expect_bad_input("simulate " + model_with("unsprung_mass_kg", "unsprung_mass_kg: 0") + " " +
-                       short_sweep(),
-                   "unsprung_mass_kg");
+  expect_bad_input(
+      "simulate " + model_with("sprung_mass_kg", "sprung_mass_kg: -385") + " " + short_sweep(),
+      "sprung_mass_kg");
+  expect_bad_input(
+      "simulate " + model_with("unsprung_mass_kg", "unsprung_mass_kg: 0") + " " + short_sweep(),
+      "unsprung_mass_kg");
 }
 
 TEST_F(Cli, TextWhereANumberBelongsIsRejected) {
-  expect_bad_input("simulate " + model_with("tyre_stiffness_N_per_m", "tyre_stiffness_N_per_m: stiff") +
-                       " " + short_sweep(),
+  expect_bad_input("simulate " +
+                       model_with("tyre_stiffness_N_per_m", "tyre_stiffness_N_per_m: stiff") + " " +
+                       short_sweep(),
                    "tyre_stiffness_N_per_m");
 }
 
@@ -167,15 +169,18 @@ TEST_F(Cli, BadMeasuredRoadCsvIsRejectedWithoutOutput) {
     return write(csv_name + ".yaml", yaml_header + csv_name + "\n");
   };
   expect_bad_input("simulate " + model() + " " + measured("empty.csv", ""), "empty.csv");
-  expect_bad_input("simulate " + model() + " " + measured("nounit.csv", "time,road[m]\n0,0\n0.1,0\n"),
-                   "nounit.csv");
-  expect_bad_input("simulate " + model() + " " + measured("unit.csv", "time[s],road[furlong]\n0,0\n0.1,0\n"),
-                   "furlong");
+  expect_bad_input(
+      "simulate " + model() + " " + measured("nounit.csv", "time,road[m]\n0,0\n0.1,0\n"),
+      "nounit.csv");
+  expect_bad_input(
+      "simulate " + model() + " " + measured("unit.csv", "time[s],road[furlong]\n0,0\n0.1,0\n"),
+      "furlong");
   expect_bad_input("simulate " + model() + " " +
                        measured("time.csv", "time[s],road[m]\n0,0\n0.1,0\n0.1,0\n0.05,0\n"),
                    "time.csv");
-  expect_bad_input("simulate " + model() + " " + measured("bad.csv", "time[s],road[m]\n0,0\n0.1,x\n"),
-                   "bad.csv");
+  expect_bad_input(
+      "simulate " + model() + " " + measured("bad.csv", "time[s],road[m]\n0,0\n0.1,x\n"),
+      "bad.csv");
 }
 
 TEST_F(Cli, FailedRunKeepsAnExistingOutput) {
@@ -183,7 +188,7 @@ TEST_F(Cli, FailedRunKeepsAnExistingOutput) {
   const fs::path out = dir_ / "keep.csv";
   std::ofstream(out) << "precious\n";
   const CliRun run = run_cli("simulate " + model() + " " + short_sweep() +
-                          " --method rk4 --step 0.005 -o " + out.string());
+                             " --method rk4 --step 0.005 -o " + out.string());
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("failed at t ="), std::string::npos) << run.output;
   std::ifstream in(out);

@@ -83,9 +83,9 @@ TEST(DahlFriction, SteadyLoopTurningForceAndEnergyMatchClosedForm) {
   const auto trajectory = simulate::integrate(system, {0.0}, times, options);
 
   const double turning = kFc * std::tanh(kSigma0 * amplitude / kFc);
-  const double energy = 2.0 * (2.0 * amplitude * kFc -
-                               (kFc + turning) * (kFc / kSigma0) *
-                                   (1.0 - std::exp(-2.0 * kSigma0 * amplitude / kFc)));
+  const double energy =
+      2.0 * (2.0 * amplitude * kFc - (kFc + turning) * (kFc / kSigma0) *
+                                         (1.0 - std::exp(-2.0 * kSigma0 * amplitude / kFc)));
   // Turning point of the last cycle: x = +X at t = (cycles − 1 + 1/4) s.
   const std::size_t k_turn = static_cast<std::size_t>((cycles - 1) * per_cycle + per_cycle / 4);
   EXPECT_NEAR(trajectory.state_at(k_turn)[0], turning, 1e-4 * kFc);

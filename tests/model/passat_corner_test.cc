@@ -53,15 +53,15 @@ TEST(PassatCorner, StifferSmallAmplitudeTopMountPutsWheelStickModeAt22To25Hz) {
 
 TEST(PassatCorner, ModesOfTheNonlinearModelAreRefused) {
   const auto file = testing::passat_corner();
-  EXPECT_THROW(quarter_car_modes(model::QuarterCar(model::DamperState::kStickSlip,
-                                                   file.parameters)),
-               InputError);
+  EXPECT_THROW(
+      quarter_car_modes(model::QuarterCar(model::DamperState::kStickSlip, file.parameters)),
+      InputError);
 }
 
 TEST(PassatCorner, SlipModelHasOneRealModeFromTheMaxwellElement) {
   const auto file = testing::passat_corner();
-  const auto modes = quarter_car_modes(model::QuarterCar(model::DamperState::kSlip,
-                                                         file.parameters));
+  const auto modes =
+      quarter_car_modes(model::QuarterCar(model::DamperState::kSlip, file.parameters));
   ASSERT_EQ(modes.real.size(), 1u);
   EXPECT_LT(modes.real.front().eigenvalue_per_s, 0.0);
 }

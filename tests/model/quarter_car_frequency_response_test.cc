@@ -50,8 +50,8 @@ Complex body_acceleration_response(const QuarterCarParameters<double>& p, Damper
 }
 
 // Amplitude of the component at `frequency_Hz` by least squares over whole periods.
-double amplitude_at(const std::vector<double>& t, const std::vector<double>& y,
-                    double frequency_Hz, double from_s) {
+double amplitude_at(const std::vector<double>& t, const std::vector<double>& y, double frequency_Hz,
+                    double from_s) {
   const double w = 2.0 * std::numbers::pi * frequency_Hz;
   double ss = 0, sc = 0, cc = 0, ys = 0, yc = 0;
   for (std::size_t k = 0; k < t.size(); ++k) {
@@ -69,7 +69,8 @@ double amplitude_at(const std::vector<double>& t, const std::vector<double>& y,
   return std::hypot(a, b);
 }
 
-class LinearQuarterCarResponse : public ::testing::TestWithParam<std::tuple<DamperState, double>> {};
+class LinearQuarterCarResponse : public ::testing::TestWithParam<std::tuple<DamperState, double>> {
+};
 
 TEST_P(LinearQuarterCarResponse, SteadyStateMatchesAnalyticFrequencyResponse) {
   const auto [state, frequency_Hz] = GetParam();
@@ -92,20 +93,20 @@ TEST_P(LinearQuarterCarResponse, SteadyStateMatchesAnalyticFrequencyResponse) {
       << to_string(state) << " at " << frequency_Hz << " Hz";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SlipAndStick, LinearQuarterCarResponse,
-    ::testing::Combine(::testing::Values(DamperState::kSlip, DamperState::kStick),
-                       ::testing::Values(1.0, 6.0, 13.0, 30.0)));
+INSTANTIATE_TEST_SUITE_P(SlipAndStick, LinearQuarterCarResponse,
+                         ::testing::Combine(::testing::Values(DamperState::kSlip,
+                                                              DamperState::kStick),
+                                            ::testing::Values(1.0, 6.0, 13.0, 30.0)));
 
 TEST(LinearQuarterCarResponse, StickSlipWithoutFrictionEqualsSlip) {
   auto file = testing::passat_corner();
   file.parameters.coulomb_force_N = 0.0;
   const testing::SineRoad road(1e-3, 2.0, 4.0);
   simulate::SimulationOptions options;
-  const auto slip = simulate::simulate(QuarterCar(DamperState::kSlip, file.parameters), road,
-                                       options);
-  const auto stick_slip = simulate::simulate(
-      QuarterCar(DamperState::kStickSlip, file.parameters), road, options);
+  const auto slip =
+      simulate::simulate(QuarterCar(DamperState::kSlip, file.parameters), road, options);
+  const auto stick_slip =
+      simulate::simulate(QuarterCar(DamperState::kStickSlip, file.parameters), road, options);
   double max_difference = 0.0, max_value = 0.0;
   for (std::size_t k = 0; k < slip.time_s.size(); ++k) {
     max_difference = std::max(

@@ -1,6 +1,7 @@
 // CVODE (BDF) and ARKODE RK4 on the nonlinear stick/slip quarter car: they agree, and each
 // converges as its tolerance or step shrinks.
 #include "ridefit/simulate/integrator.h"
+#include "ridefit/signal/statistics.h"
 
 #include <gtest/gtest.h>
 
@@ -14,19 +15,13 @@
 namespace ridefit::simulate {
 namespace {
 
-double rms(const std::vector<double>& v) {
-  double sum = 0.0;
-  for (double x : v) sum += x * x;
-  return std::sqrt(sum / static_cast<double>(v.size()));
-}
-
 // Largest difference between two body-acceleration histories relative to the RMS.
 double relative_difference(const QuarterCarResponse& a, const QuarterCarResponse& b) {
   double worst = 0.0;
   for (std::size_t k = 0; k < a.time_s.size(); ++k) {
     worst = std::max(worst, std::abs(a.body_acc_m_per_s2[k] - b.body_acc_m_per_s2[k]));
   }
-  return worst / rms(b.body_acc_m_per_s2);
+  return worst / signal::rms(b.body_acc_m_per_s2);
 }
 
 class StickSlipRun : public ::testing::Test {
@@ -51,8 +46,8 @@ class StickSlipRun : public ::testing::Test {
 TEST_F(StickSlipRun, CvodeAndRk4AgreeOnBodyAccelerationRms) {
   const auto cvode = run(Method::kCvodeBdf, 1e-6);
   const auto rk4 = run(Method::kArkodeRk4, 1e-4);
-  const double a = rms(cvode.body_acc_m_per_s2);
-  const double b = rms(rk4.body_acc_m_per_s2);
+  const double a = signal::rms(cvode.body_acc_m_per_s2);
+  const double b = signal::rms(rk4.body_acc_m_per_s2);
   EXPECT_NEAR(a, b, 5e-3 * b);
   // The run really sticks and slips.
   double stuck_share = 0.0;

@@ -31,8 +31,7 @@ void expect_jacobian_matches_central_differences(const model::QuarterCar& car,
       const double fd = (f_plus[row] - f_minus[row]) / (2.0 * h);
       const double exact = jacobian[static_cast<std::size_t>(col * n + row)];
       EXPECT_NEAR(exact, fd, 1e-6 * std::max(1.0, std::abs(fd)))
-          << "d f" << row << " / d x" << col << " (" << model::to_string(car.damper_state())
-          << ")";
+          << "d f" << row << " / d x" << col << " (" << model::to_string(car.damper_state()) << ")";
     }
   }
 }

@@ -51,7 +51,8 @@ TEST_F(FrictionStudy, LowAmplitudeBodyGainsAStickPeakThatGrowsWithFriction) {
   // rises with Fc.
   const auto& cases = low_->cases;
   for (std::size_t i = 1; i < cases.size(); ++i) {
-    EXPECT_GT(cases[i].body_stick_band_rms_m_per_s2, 1.3 * cases[i - 1].body_stick_band_rms_m_per_s2)
+    EXPECT_GT(cases[i].body_stick_band_rms_m_per_s2,
+              1.3 * cases[i - 1].body_stick_band_rms_m_per_s2)
         << "Fc = " << cases[i].coulomb_force_N;
     EXPECT_GT(cases[i].stuck_share, cases[i - 1].stuck_share);
   }

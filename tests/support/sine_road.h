@@ -11,7 +11,8 @@ namespace ridefit::testing {
 class SineRoad : public road::RoadInput {
  public:
   SineRoad(double amplitude_m, double frequency_Hz, double duration_s)
-      : amplitude_m_(amplitude_m), omega_(2.0 * std::numbers::pi * frequency_Hz),
+      : amplitude_m_(amplitude_m),
+        omega_(2.0 * std::numbers::pi * frequency_Hz),
         duration_s_(duration_s) {}
   road::RoadSample at(double t) const override {
     return {amplitude_m_ * std::sin(omega_ * t), amplitude_m_ * omega_ * std::cos(omega_ * t)};

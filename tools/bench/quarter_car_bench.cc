@@ -1,7 +1,7 @@
 // Stick/slip quarter car (Passat corner, Fc = 60 N) over 60 s of ISO 8608 class A road at
 // 50 km/h, output at 1 kHz: CVODE at rtol 1e-6, and RK4 at the largest of a few steps that
-// matches CVODE's body-acceleration RMS within 0.5 % (rms_diff_pct). The road is generated once outside
-// the timed loop (tools/bench/road_bench.cc times the generation).
+// matches CVODE's body-acceleration RMS within 0.5 % (rms_diff_pct). The road is generated once
+// outside the timed loop (tools/bench/road_bench.cc times the generation).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -9,6 +9,7 @@
 
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/road/iso8608.h"
+#include "ridefit/signal/statistics.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
 
 namespace {
@@ -46,16 +47,10 @@ ridefit::simulate::SimulationOptions options(Method method, double step_s) {
   return o;
 }
 
-double rms(const std::vector<double>& v) {
-  double s = 0.0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s / static_cast<double>(v.size()));
-}
-
 void run(benchmark::State& state, Method method, double step_s) {
   const auto o = options(method, step_s);
-  const auto reference = ridefit::simulate::simulate(passat(), class_a_road(),
-                                                     options(Method::kCvodeBdf, 0.0));
+  const auto reference =
+      ridefit::simulate::simulate(passat(), class_a_road(), options(Method::kCvodeBdf, 0.0));
   ridefit::simulate::QuarterCarResponse response;
   for (auto _ : state) {
     response = ridefit::simulate::simulate(passat(), class_a_road(), o);
@@ -63,9 +58,11 @@ void run(benchmark::State& state, Method method, double step_s) {
   }
   state.counters["steps"] = static_cast<double>(response.statistics.steps);
   state.counters["rhs_evals"] = static_cast<double>(response.statistics.rhs_evaluations);
-  state.counters["body_rms"] = rms(response.body_acc_m_per_s2);
+  state.counters["body_rms"] = ridefit::signal::rms(response.body_acc_m_per_s2);
   state.counters["rms_diff_pct"] =
-      100.0 * std::abs(rms(response.body_acc_m_per_s2) / rms(reference.body_acc_m_per_s2) - 1.0);
+      100.0 * std::abs(ridefit::signal::rms(response.body_acc_m_per_s2) /
+                           ridefit::signal::rms(reference.body_acc_m_per_s2) -
+                       1.0);
 }
 
 void BM_StickSlipClassA60s_Cvode(benchmark::State& state) { run(state, Method::kCvodeBdf, 0.0); }

@@ -34,7 +34,8 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& en
   for (const auto& entry : entries) {
     const auto eq = entry.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size()) {
-      throw InputError(fmt::format("--set '{}': expected KEY=NUMBER, e.g. coulomb_force_N=30", entry));
+      throw InputError(
+          fmt::format("--set '{}': expected KEY=NUMBER, e.g. coulomb_force_N=30", entry));
     }
     const std::string key = entry.substr(0, eq);
     const std::string text = entry.substr(eq + 1);
@@ -55,13 +56,6 @@ nlohmann::json to_json(const simulate::SolverStatistics& statistics) {
           {"jacobian_evaluations", statistics.jacobian_evaluations},
           {"error_test_failures", statistics.error_test_failures},
           {"nonlinear_convergence_failures", statistics.nonlinear_convergence_failures}};
-}
-
-double rms(const std::vector<double>& values) {
-  if (values.empty()) return 0.0;
-  double sum = 0.0;
-  for (double v : values) sum += v * v;
-  return std::sqrt(sum / static_cast<double>(values.size()));
 }
 
 }  // namespace ridefit::cli

@@ -26,7 +26,4 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& en
 
 nlohmann::json to_json(const simulate::SolverStatistics& statistics);
 
-// Root-mean-square of a channel.
-double rms(const std::vector<double>& values);
-
 }  // namespace ridefit::cli

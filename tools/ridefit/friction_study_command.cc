@@ -77,8 +77,8 @@ void run(const FrictionStudyFlags& flags) {
     nlohmann::json cases = nlohmann::json::array();
     if (!flags.json) {
       std::cout << fmt::format("\n{} ({})\n", stem, excitation_file);
-      std::cout << fmt::format("{:>7} {:>11} {:>12} {:>9} {:>9} {:>12} {:>12} {:>8}\n",
-                               "Fc[N]", "body_pk[Hz]", "wheel_pk[Hz]", "body_rms", "wheel_rms",
+      std::cout << fmt::format("{:>7} {:>11} {:>12} {:>9} {:>9} {:>12} {:>12} {:>8}\n", "Fc[N]",
+                               "body_pk[Hz]", "wheel_pk[Hz]", "body_rms", "wheel_rms",
                                "body_1.0-1.6", "body_2.8-4.2", "stuck[%]");
     }
     for (const auto& c : result.cases) {
@@ -95,8 +95,8 @@ void run(const FrictionStudyFlags& flags) {
         std::cout << fmt::format(
             "{:>7g} {:>11.2f} {:>12.2f} {:>9.4f} {:>9.4f} {:>12.4f} {:>12.4f} {:>8.1f}\n",
             c.coulomb_force_N, c.body_peak_Hz, c.wheel_peak_Hz, c.body_acc_rms_m_per_s2,
-            c.wheel_acc_rms_m_per_s2, c.body_slip_band_rms_m_per_s2,
-            c.body_stick_band_rms_m_per_s2, 100.0 * c.stuck_share);
+            c.wheel_acc_rms_m_per_s2, c.body_slip_band_rms_m_per_s2, c.body_stick_band_rms_m_per_s2,
+            100.0 * c.stuck_share);
       }
     }
     if (!flags.json && !psd_file.empty()) std::cout << "PSDs: " << psd_file << "\n";
@@ -105,7 +105,8 @@ void run(const FrictionStudyFlags& flags) {
   }
   if (!flags.json) {
     std::cout << "\nbody_pk: body-acceleration PSD peak in 0.5-6 Hz; wheel_pk: wheel PSD peak in "
-                 "8-30 Hz;\nRMS in m/s^2; body_1.0-1.6 / body_2.8-4.2: body RMS in the slip / stick band; stuck: share "
+                 "8-30 Hz;\nRMS in m/s^2; body_1.0-1.6 / body_2.8-4.2: body RMS in the slip / "
+                 "stick band; stuck: share "
                  "of time with |F_f| < 0.95 Fc.\n";
   }
   if (flags.json) std::cout << summary.dump(2) << "\n";

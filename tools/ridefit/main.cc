@@ -1,7 +1,7 @@
 // The `ridefit` command: one program with subcommands. Exit codes: 0 success, 1 a run that
 // failed (solver failure, non-convergence), 2 bad input (files, keys, flags).
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
 #include <exception>
 #include <iostream>

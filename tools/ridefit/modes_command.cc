@@ -20,13 +20,13 @@ struct ModesFlags {
 };
 
 void run(const ModesFlags& flags) {
-  const std::vector<std::string> states =
-      flags.state.empty() ? std::vector<std::string>{"slip", "stick"}
-                          : std::vector<std::string>{flags.state};
+  const std::vector<std::string> states = flags.state.empty()
+                                              ? std::vector<std::string>{"slip", "stick"}
+                                              : std::vector<std::string>{flags.state};
   nlohmann::json summary = {{"model", flags.model_file}, {"states", nlohmann::json::object()}};
   if (!flags.json) {
-    std::cout << fmt::format("{:<6} {:<6} {:>12} {:>12} {:>9}\n", "state", "mode",
-                             "natural[Hz]", "damped[Hz]", "damping");
+    std::cout << fmt::format("{:<6} {:<6} {:>12} {:>12} {:>9}\n", "state", "mode", "natural[Hz]",
+                             "damped[Hz]", "damping");
   }
   for (const auto& state : states) {
     const auto file =
@@ -47,8 +47,8 @@ void run(const ModesFlags& flags) {
     }
     nlohmann::json first_order = nlohmann::json::array();
     for (const auto& mode : modes.real) {
-      first_order.push_back({{"eigenvalue_per_s", mode.eigenvalue_per_s},
-                             {"time_constant_s", mode.time_constant_s}});
+      first_order.push_back(
+          {{"eigenvalue_per_s", mode.eigenvalue_per_s}, {"time_constant_s", mode.time_constant_s}});
       if (!flags.json) {
         std::cout << fmt::format("{:<6} {:<6} first-order, time constant {:.4g} s\n", state,
                                  "damper", mode.time_constant_s);

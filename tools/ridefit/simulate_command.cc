@@ -11,6 +11,7 @@
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/road/excitation_file.h"
+#include "ridefit/signal/statistics.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
 #include "subcommands.h"
 
@@ -68,24 +69,23 @@ void run(const SimulateFlags& flags) {
   for (double t : response.travel_m) travel_peak = std::max(travel_peak, std::abs(t));
 
   if (flags.json) {
-    nlohmann::json summary = {
-        {"model", flags.model_file},
-        {"excitation", flags.excitation_file},
-        {"damper_state", model::to_string(car.damper_state())},
-        {"output", flags.output_file},
-        {"duration_s", response.time_s.back()},
-        {"samples", response.time_s.size()},
-        {"output_rate_Hz", flags.output_rate_Hz},
-        {"wall_time_s", elapsed_s},
-        {"solver", to_json(response.statistics)},
-        {"rms",
-         {{"body_acc_m_per_s2", rms(response.body_acc_m_per_s2)},
-          {"wheel_acc_m_per_s2", rms(response.wheel_acc_m_per_s2)},
-          {"travel_m", rms(response.travel_m)},
-          {"tyre_force_N", rms(response.tyre_force_N)},
-          {"friction_force_N", rms(response.friction_force_N)}}},
-        {"travel_peak_m", travel_peak},
-        {"stuck_share", stuck_share}};
+    nlohmann::json summary = {{"model", flags.model_file},
+                              {"excitation", flags.excitation_file},
+                              {"damper_state", model::to_string(car.damper_state())},
+                              {"output", flags.output_file},
+                              {"duration_s", response.time_s.back()},
+                              {"samples", response.time_s.size()},
+                              {"output_rate_Hz", flags.output_rate_Hz},
+                              {"wall_time_s", elapsed_s},
+                              {"solver", to_json(response.statistics)},
+                              {"rms",
+                               {{"body_acc_m_per_s2", signal::rms(response.body_acc_m_per_s2)},
+                                {"wheel_acc_m_per_s2", signal::rms(response.wheel_acc_m_per_s2)},
+                                {"travel_m", signal::rms(response.travel_m)},
+                                {"tyre_force_N", signal::rms(response.tyre_force_N)},
+                                {"friction_force_N", signal::rms(response.friction_force_N)}}},
+                              {"travel_peak_m", travel_peak},
+                              {"stuck_share", stuck_share}};
     std::cout << summary.dump(2) << "\n";
   } else {
     std::cout << fmt::format(
@@ -93,8 +93,8 @@ void run(const SimulateFlags& flags) {
         "{:.4g} m/s^2, stuck {:.1f} % of the time{}\n",
         model::to_string(car.damper_state()), flags.excitation_file, response.time_s.size(),
         response.statistics.steps, response.statistics.method,
-        rms(response.body_acc_m_per_s2), rms(response.wheel_acc_m_per_s2), 100.0 * stuck_share,
-        flags.output_file.empty() ? "" : ", written to " + flags.output_file);
+        signal::rms(response.body_acc_m_per_s2), signal::rms(response.wheel_acc_m_per_s2),
+        100.0 * stuck_share, flags.output_file.empty() ? "" : ", written to " + flags.output_file);
   }
 }
 
@@ -114,11 +114,13 @@ void register_simulate(CLI::App& app) {
   command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--duration", flags->duration_s,
-                      "Simulated time [s] (default: the excitation's duration)")
+  command
+      ->add_option("--duration", flags->duration_s,
+                   "Simulated time [s] (default: the excitation's duration)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--damper-state", flags->damper_state,
-                      "Override the model's damper_state: slip, stick or stick_slip")
+  command
+      ->add_option("--damper-state", flags->damper_state,
+                   "Override the model's damper_state: slip, stick or stick_slip")
       ->check(CLI::IsMember({"slip", "stick", "stick_slip"}));
   command->add_option("--set", flags->overrides,
                       "Override a model key, e.g. --set coulomb_force_N=30 (repeatable)");

@@ -14,8 +14,8 @@ void write_atomically(const std::filesystem::path& path,
   const std::filesystem::path dir =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(dir)) {
-    throw InputError(fmt::format("{}: cannot write, directory '{}' does not exist",
-                                 path.string(), dir.string()));
+    throw InputError(fmt::format("{}: cannot write, directory '{}' does not exist", path.string(),
+                                 dir.string()));
   }
   const std::filesystem::path tmp =
       dir / fmt::format(".{}.tmp{}", path.filename().string(), static_cast<long>(getpid()));

@@ -27,8 +27,7 @@ QuarterCarFile load_quarter_car(const std::filesystem::path& path,
   }
   file.choice("model", {"quarter_car"});
   QuarterCarFile result{};
-  result.damper_state =
-      parse_damper_state(file.text("damper_state"), file.locate("damper_state"));
+  result.damper_state = parse_damper_state(file.text("damper_state"), file.locate("damper_state"));
   auto& p = result.parameters;
   p.sprung_mass_kg = file.positive("sprung_mass_kg");
   p.unsprung_mass_kg = file.positive("unsprung_mass_kg");

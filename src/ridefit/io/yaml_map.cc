@@ -22,9 +22,8 @@ YamlMap YamlMap::load(const std::filesystem::path& path) {
                                  e.mark.column + 1, e.msg));
   }
   if (!root.IsMap()) {
-    throw InputError(
-        fmt::format("{}: expected a YAML mapping of `key: value` lines at the top level",
-                    path.string()));
+    throw InputError(fmt::format(
+        "{}: expected a YAML mapping of `key: value` lines at the top level", path.string()));
   }
   return YamlMap(root, path, "");
 }
@@ -57,12 +56,11 @@ double YamlMap::number(const std::string& key) const {
   try {
     result = value.as<double>();
   } catch (const YAML::Exception&) {
-    throw InputError(
-        fmt::format("{} is '{}', expected a number", locate(key), value.Scalar()));
+    throw InputError(fmt::format("{} is '{}', expected a number", locate(key), value.Scalar()));
   }
   if (!std::isfinite(result)) {
-    throw InputError(fmt::format("{} is '{}', expected a finite number", locate(key),
-                                 value.Scalar()));
+    throw InputError(
+        fmt::format("{} is '{}', expected a finite number", locate(key), value.Scalar()));
   }
   return result;
 }
@@ -101,9 +99,8 @@ long YamlMap::integer(const std::string& key) const {
   try {
     return value.as<long>();
   } catch (const YAML::Exception&) {
-    throw InputError(
-        fmt::format("{} is '{}', expected an integer", locate(key),
-                    value.IsScalar() ? value.Scalar() : std::string("a non-scalar")));
+    throw InputError(fmt::format("{} is '{}', expected an integer", locate(key),
+                                 value.IsScalar() ? value.Scalar() : std::string("a non-scalar")));
   }
 }
 
@@ -160,8 +157,8 @@ void YamlMap::finish() const {
   for (const auto& k : unknown) list += (list.empty() ? "'" : ", '") + k + "'";
   std::string known;
   for (const auto& k : used_) known += (known.empty() ? "" : ", ") + k;
-  throw InputError(fmt::format("{}: unknown key{} {}{}; the keys read here are: {}",
-                               path_.string(), unknown.size() > 1 ? "s" : "", list,
+  throw InputError(fmt::format("{}: unknown key{} {}{}; the keys read here are: {}", path_.string(),
+                               unknown.size() > 1 ? "s" : "", list,
                                where_.empty() ? "" : " under '" + where_ + "'", known));
 }
 

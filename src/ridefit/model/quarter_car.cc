@@ -37,8 +37,7 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
       break;
     case DamperState::kStickSlip:
       out.friction_force_N = x[5];
-      out.stuck = (p.coulomb_force_N > 0.0 &&
-                   std::abs(x[5]) < kStuckForceShare * p.coulomb_force_N)
+      out.stuck = (p.coulomb_force_N > 0.0 && std::abs(x[5]) < kStuckForceShare * p.coulomb_force_N)
                       ? 1.0
                       : 0.0;
       break;

@@ -57,12 +57,12 @@ struct QuarterCarOutputs {
   double road_m = 0;
   double body_acc_m_per_s2 = 0;
   double wheel_acc_m_per_s2 = 0;
-  double travel_m = 0;              // zs − zu, extension positive
-  double tyre_force_N = 0;          // dynamic tyre load, compression positive
-  double damper_force_N = 0;        // hydraulic damper force c·z_c'
-  double friction_force_N = 0;      // Dahl friction F_f
+  double travel_m = 0;                // zs − zu, extension positive
+  double tyre_force_N = 0;            // dynamic tyre load, compression positive
+  double damper_force_N = 0;          // hydraulic damper force c·z_c'
+  double friction_force_N = 0;        // Dahl friction F_f
   double top_mount_deflection_m = 0;  // damper path top mount, z − z_c
-  double stuck = 0;                 // 1 while the damper sticks (rule in QuarterCar)
+  double stuck = 0;                   // 1 while the damper sticks (rule in QuarterCar)
 };
 
 // Quarter car of a MacPherson strut (seed 000, Figure 7 and Equations 9–11).

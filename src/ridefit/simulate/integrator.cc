@@ -29,7 +29,8 @@ struct SundialsSession {
   std::string last_error;
 
   explicit SundialsSession(int n) {
-    if (SUNContext_Create(nullptr, &context) != 0) throw RunError("SUNDIALS: cannot create context");
+    if (SUNContext_Create(nullptr, &context) != 0)
+      throw RunError("SUNDIALS: cannot create context");
     y = N_VNew_Serial(n, context);
     absolute_tolerance = N_VNew_Serial(n, context);
   }
@@ -94,16 +95,14 @@ ARKodeButcherTable classic_rk4_table() {
 
 }  // namespace
 
-const char* to_string(Method method) {
-  return method == Method::kCvodeBdf ? "cvode" : "rk4";
-}
+const char* to_string(Method method) { return method == Method::kCvodeBdf ? "cvode" : "rk4"; }
 
 Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
                      const std::vector<double>& output_times_s, const IntegratorOptions& options) {
   const int n = system.size();
   if (static_cast<int>(x0.size()) != n) {
-    throw InputError(fmt::format("initial state has {} values, the model has {} states",
-                                 x0.size(), n));
+    throw InputError(
+        fmt::format("initial state has {} values, the model has {} states", x0.size(), n));
   }
   if (output_times_s.empty()) throw InputError("no output times requested");
   for (std::size_t k = 1; k < output_times_s.size(); ++k) {
@@ -142,7 +141,8 @@ Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
           "CVodeSetLinearSolver");
     check(CVodeSetJacFn(session.memory, jacobian_callback), "CVodeSetJacFn");
     check(CVodeSetMaxNumSteps(session.memory, options.max_steps), "CVodeSetMaxNumSteps");
-    if (options.max_step_s > 0.0) check(CVodeSetMaxStep(session.memory, options.max_step_s), "CVodeSetMaxStep");
+    if (options.max_step_s > 0.0)
+      check(CVodeSetMaxStep(session.memory, options.max_step_s), "CVodeSetMaxStep");
     const double t_end = output_times_s.back();
     check(CVodeSetStopTime(session.memory, t_end), "CVodeSetStopTime");
     for (std::size_t k = 1; k < output_times_s.size(); ++k) {
@@ -172,7 +172,8 @@ Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
     session.arkode = true;
     session.memory = ERKStepCreate(rhs_callback, t0, session.y, session.context);
     if (session.memory == nullptr) throw RunError("SUNDIALS: ERKStepCreate failed");
-    check(ERKStepSetErrHandlerFn(session.memory, error_handler, &session), "ERKStepSetErrHandlerFn");
+    check(ERKStepSetErrHandlerFn(session.memory, error_handler, &session),
+          "ERKStepSetErrHandlerFn");
     session.table = classic_rk4_table();
     check(ERKStepSetTable(session.memory, session.table), "ERKStepSetTable");
     check(ERKStepSetUserData(session.memory, &data), "ERKStepSetUserData");

@@ -8,8 +8,8 @@
 namespace ridefit::simulate {
 
 enum class Method {
-  kCvodeBdf,     // SUNDIALS CVODE: variable-order BDF, Newton with the dense Jacobian
-  kArkodeRk4,    // SUNDIALS ARKODE ERKStep: classic 4-stage RK4 at a fixed step (seed's ode4)
+  kCvodeBdf,   // SUNDIALS CVODE: variable-order BDF, Newton with the dense Jacobian
+  kArkodeRk4,  // SUNDIALS ARKODE ERKStep: classic 4-stage RK4 at a fixed step (seed's ode4)
 };
 
 struct IntegratorOptions {

@@ -30,10 +30,10 @@ QuarterCarResponse simulate(const model::QuarterCar& car, const road::RoadInput&
   response.statistics = trajectory.statistics;
   response.time_s = times;
   auto reserve = [samples](std::vector<double>& v) { v.reserve(samples); };
-  for (auto* channel : {&response.road_m, &response.body_acc_m_per_s2,
-                        &response.wheel_acc_m_per_s2, &response.travel_m, &response.tyre_force_N,
-                        &response.damper_force_N, &response.friction_force_N,
-                        &response.top_mount_deflection_m, &response.stuck}) {
+  for (auto* channel :
+       {&response.road_m, &response.body_acc_m_per_s2, &response.wheel_acc_m_per_s2,
+        &response.travel_m, &response.tyre_force_N, &response.damper_force_N,
+        &response.friction_force_N, &response.top_mount_deflection_m, &response.stuck}) {
     reserve(*channel);
   }
   for (std::size_t k = 0; k < samples; ++k) {

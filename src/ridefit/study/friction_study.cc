@@ -1,4 +1,5 @@
 #include "ridefit/study/friction_study.h"
+#include "ridefit/signal/statistics.h"
 
 #include <algorithm>
 #include <atomic>
@@ -14,12 +15,6 @@
 namespace ridefit::study {
 namespace {
 
-double rms(const std::vector<double>& values) {
-  double sum = 0.0;
-  for (double v : values) sum += v * v;
-  return std::sqrt(sum / static_cast<double>(values.size()));
-}
-
 FrictionCase run_case(const model::QuarterCarParameters<double>& base, double coulomb_force_N,
                       const road::RoadInput& road, const FrictionStudyOptions& options,
                       std::vector<double>& frequency_Hz) {
@@ -31,9 +26,8 @@ FrictionCase run_case(const model::QuarterCarParameters<double>& base, double co
   const double fs = options.simulation.output_rate_Hz;
   signal::WelchOptions welch;
   // A run shorter than one segment gets a single segment over the whole run.
-  welch.segment_length_samples =
-      std::min(static_cast<std::size_t>(std::lround(options.psd_segment_s * fs)),
-               response.time_s.size());
+  welch.segment_length_samples = std::min(
+      static_cast<std::size_t>(std::lround(options.psd_segment_s * fs)), response.time_s.size());
   const auto body = signal::welch_psd(response.body_acc_m_per_s2, fs, welch);
   const auto wheel = signal::welch_psd(response.wheel_acc_m_per_s2, fs, welch);
 
@@ -42,10 +36,9 @@ FrictionCase run_case(const model::QuarterCarParameters<double>& base, double co
   result.body_peak_Hz =
       signal::find_peak(body, options.body_band_low_Hz, options.body_band_high_Hz).frequency_Hz;
   result.wheel_peak_Hz =
-      signal::find_peak(wheel, options.wheel_band_low_Hz, options.wheel_band_high_Hz)
-          .frequency_Hz;
-  result.body_acc_rms_m_per_s2 = rms(response.body_acc_m_per_s2);
-  result.wheel_acc_rms_m_per_s2 = rms(response.wheel_acc_m_per_s2);
+      signal::find_peak(wheel, options.wheel_band_low_Hz, options.wheel_band_high_Hz).frequency_Hz;
+  result.body_acc_rms_m_per_s2 = signal::rms(response.body_acc_m_per_s2);
+  result.wheel_acc_rms_m_per_s2 = signal::rms(response.wheel_acc_m_per_s2);
   result.body_slip_band_rms_m_per_s2 =
       signal::band_rms(body, options.slip_band_low_Hz, options.slip_band_high_Hz);
   result.body_stick_band_rms_m_per_s2 =
@@ -89,8 +82,8 @@ FrictionStudyResult run_friction_study(const model::QuarterCarParameters<double>
     }
   };
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned threads =
-      static_cast<unsigned>(std::min<std::size_t>(options.threads ? options.threads : cores, count));
+  const unsigned threads = static_cast<unsigned>(
+      std::min<std::size_t>(options.threads ? options.threads : cores, count));
   std::vector<std::thread> pool;
   for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
   worker();

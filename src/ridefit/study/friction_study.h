@@ -35,7 +35,7 @@ struct FrictionCase {
   double body_slip_band_rms_m_per_s2 = 0.0;   // from the PSD over the slip band
   double body_stick_band_rms_m_per_s2 = 0.0;  // from the PSD over the stick band
   double stuck_share = 0.0;                   // share of samples with stuck = 1
-  std::vector<double> body_psd;   // (m/s^2)^2/Hz on frequency_Hz
+  std::vector<double> body_psd;               // (m/s^2)^2/Hz on frequency_Hz
   std::vector<double> wheel_psd;
   simulate::SolverStatistics statistics;
 };
@@ -46,9 +46,9 @@ struct FrictionStudyResult {
 };
 
 // Runs the cases in parallel. `progress` (may be empty) is called after each case.
-FrictionStudyResult run_friction_study(const model::QuarterCarParameters<double>& parameters,
-                                       const road::RoadInput& road,
-                                       const FrictionStudyOptions& options,
-                                       const std::function<void(const FrictionCase&)>& progress = {});
+FrictionStudyResult run_friction_study(
+    const model::QuarterCarParameters<double>& parameters, const road::RoadInput& road,
+    const FrictionStudyOptions& options,
+    const std::function<void(const FrictionCase&)>& progress = {});
 
 }  // namespace ridefit::study
