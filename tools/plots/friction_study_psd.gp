@@ -3,7 +3,9 @@
 set terminal pngcairo size 1200,500 noenhanced font ",10"
 set output png
 set datafile separator ","
-set key autotitle columnhead top right font ",8"
+set key top right font ",9"
+# "body_acc_psd_Fc12N[...]" -> "Fc = 12 N"
+label(h) = "Fc = " . h[strstrt(h, "_Fc") + 3 : strstrt(h, "N[") - 1] . " N"
 set logscale xy
 set grid xtics ytics mxtics
 set format y "%.0e"
@@ -14,7 +16,10 @@ set xrange [0.5:30]
 set title "body acceleration"
 set xlabel "frequency [Hz]"
 set ylabel "PSD [(m/s^2)^2/Hz]"
-plot for [i=2:n+1] psd using 1:i with lines lw 1.5
+set yrange [1e-8:*]
+plot for [i=2:n+1] psd using 1:i with lines lw 1.5 title label(columnhead(i))
 set title "wheel acceleration"
-plot for [i=n+2:2*n+1] psd using 1:i with lines lw 1.5
+set key top left
+set yrange [1e-7:*]
+plot for [i=n+2:2*n+1] psd using 1:i with lines lw 1.5 title label(columnhead(i))
 unset multiplot

@@ -1,6 +1,9 @@
 // ridefit friction-study MODEL.yaml EXCITATION.yaml... [--coulomb-forces LIST] [-o DIR]
 // The seed's Section 3.2 study: the stick/slip quarter car at several Coulomb forces.
 #include <fmt/core.h>
+#include <unistd.h>
+
+#include <cstdio>
 
 #include <filesystem>
 #include <iostream>
@@ -58,16 +61,19 @@ void run(const FrictionStudyFlags& flags) {
   options.simulation.integrator = flags.solver.options();
 
   nlohmann::json summary = {{"model", flags.model_file}, {"excitations", nlohmann::json::array()}};
+  const bool tty = isatty(fileno(stderr)) != 0;
   for (const auto& excitation_file : flags.excitation_files) {
     const auto road = road::load_excitation(excitation_file);
     std::size_t done = 0;
     const auto result = study::run_friction_study(
         model_file.parameters, *road, options, [&](const study::FrictionCase& c) {
-          std::cerr << fmt::format("\r{}: {}/{} cases (Fc = {:g} N done)   ", excitation_file,
-                                   ++done, flags.coulomb_forces_N.size(), c.coulomb_force_N)
+          // On a terminal the progress line rewrites itself; in a log, one line per case.
+          std::cerr << fmt::format("{}{}: {}/{} cases (Fc = {:g} N done){}", tty ? "\r" : "",
+                                   excitation_file, ++done, flags.coulomb_forces_N.size(),
+                                   c.coulomb_force_N, tty ? "   " : "\n")
                     << std::flush;
         });
-    std::cerr << "\n";
+    if (tty) std::cerr << "\n";
     const std::string stem = std::filesystem::path(excitation_file).stem().string();
     std::string psd_file;
     if (!flags.output_dir.empty()) {
