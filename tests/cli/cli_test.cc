@@ -188,13 +188,62 @@ TEST_F(Cli, FailedRunKeepsAnExistingOutput) {
   const fs::path out = dir_ / "keep.csv";
   std::ofstream(out) << "precious\n";
   const CliRun run = run_cli("simulate " + model() + " " + short_sweep() +
-                             " --method rk4 --step 0.005 -o " + out.string());
+                             " --method rk4 --rate 100 --step 0.005 -o " + out.string());
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("failed at t ="), std::string::npos) << run.output;
   std::ifstream in(out);
   std::string content;
   std::getline(in, content);
   EXPECT_EQ(content, "precious");
+}
+
+TEST_F(Cli, OutputThatCannotBeWrittenIsRefusedBeforeRunning) {
+  const CliRun into_directory =
+      run_cli("simulate " + model() + " " + short_sweep() + " -o " + dir_.string());
+  EXPECT_EQ(into_directory.exit_code, 2) << into_directory.output;
+  EXPECT_NE(into_directory.output.find("is a directory"), std::string::npos);
+  const std::string victim = model_with("coulomb_force_N", "coulomb_force_N: 60");
+  const CliRun onto_input = run_cli("simulate " + victim + " " + short_sweep() + " -o " + victim);
+  EXPECT_EQ(onto_input.exit_code, 2) << onto_input.output;
+  EXPECT_NE(onto_input.output.find("also an input"), std::string::npos);
+  std::ifstream in(victim);
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first.rfind("#", 0), 0u) << "the model file must be untouched";
+}
+
+TEST_F(Cli, DuplicateKeysAndBadDamperStateAreRejectedEverywhere) {
+  expect_bad_input("simulate " +
+                       model_with("sprung_mass_kg", "sprung_mass_kg: 385\nsprung_mass_kg: 100") +
+                       " " + short_sweep(),
+                   "duplicate key 'sprung_mass_kg'");
+  const CliRun modes = run_cli("modes " + model_with("damper_state", "damper_state: stick-slip"));
+  EXPECT_EQ(modes.exit_code, 2) << modes.output;
+  EXPECT_NE(modes.output.find("damper_state"), std::string::npos) << modes.output;
+}
+
+TEST_F(Cli, MessagesNameTheFlagThatWasWrong) {
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --set sprung_mass_kg=-3",
+                   "--set sprung_mass_kg");
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --rate 0",
+                   "expected a finite number > 0");
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --duration 5",
+                   "longer than the excitation");
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --rate 1e9", "output samples");
+  expect_bad_input("simulate " + model() + " " + short_sweep() + " --method rk4 --step 0.01",
+                   "longer than the output interval");
+}
+
+TEST_F(Cli, FrictionStudyChecksEveryExcitationBeforeRunning) {
+  const std::string bad = write("bad.yaml", "type: log_sweep\ninitial_amplitude_m: 0\n");
+  const fs::path out = dir_ / "study";
+  const CliRun run = run_cli("friction-study " + model() + " " + short_sweep() + " " + bad +
+                             " --rate 200 -o " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_FALSE(fs::exists(out / "sweep_psd.csv")) << "no partial results on bad input";
+  const CliRun inf =
+      run_cli("friction-study " + model() + " " + short_sweep() + " --coulomb-forces 0,inf");
+  EXPECT_EQ(inf.exit_code, 2) << inf.output;
 }
 
 }  // namespace

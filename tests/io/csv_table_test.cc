@@ -138,7 +138,19 @@ TEST_F(CsvTableTest, TimeMustIncreaseStrictlyAndTheRowIsNamed) {
 TEST_F(CsvTableTest, MissingColumnNamesTheColumnsThatExist) {
   const CsvTable table = CsvTable::read(write("cols.csv", "time[s],road[mm]\n0,1\n"));
   expect_input_error([&] { table.column("body_acc"); },
-                     {"cols.csv", "'body_acc'", "time[s]", "road[m]"});
+                     {"cols.csv", "'body_acc'", "time[s]", "road[mm]"});
+  // The units as the file wrote them, not the SI units the columns hold.
+  const CsvTable xy = CsvTable::read(write("xy.csv", "x[m], y[mm] ,t[ms]\n0,1,2\n"));
+  expect_input_error([&] { xy.column("distance"); }, {"x[m], y[mm], t[ms]"});
+  // A table built in memory has no file to ask: SI units.
+  CsvTable built(dir_ / "never_written.csv");
+  built.add("road", "mm", {1.0});
+  try {
+    built.column("time");
+    ADD_FAILURE() << "no InputError thrown";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::string(e.what()).ends_with("road[m]")) << e.what();
+  }
 }
 
 struct BadCsv {

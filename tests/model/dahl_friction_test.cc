@@ -27,6 +27,7 @@ class DrivenDahl : public simulate::OdeSystem {
     return ramp_ ? amplitude_m_ : amplitude_m_ * omega_ * std::cos(omega_ * t);
   }
   int size() const override { return 1; }
+  double max_step_s() const override { return 0.0; }
   bool derivatives(double t, const double* x, double* xdot) const override {
     xdot[0] = dahl_.force_rate_N_per_s(x[0], velocity(t));
     return true;

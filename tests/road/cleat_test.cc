@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ridefit/io/input_error.h"
+#include "support/input_error_message.h"
 
 namespace ridefit::road {
 namespace {
@@ -81,12 +82,7 @@ TEST(RoadCleat, ShortPatchFollowsTheSemicircle) {
 
 TEST(RoadCleat, InvalidParametersNameTheKey) {
   auto message = [](const CleatParameters& p) {
-    try {
-      make_cleat_road(p);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::input_error_message([&] { make_cleat_road(p); });
   };
   CleatParameters p;
   p.height_m = 0.0;
@@ -99,6 +95,55 @@ TEST(RoadCleat, InvalidParametersNameTheKey) {
   EXPECT_NE(message(p).find("'tyre_contact_length_m'"), std::string::npos);
   EXPECT_EQ(parse_cleat_shape("rectangular"), CleatShape::kRectangular);
   EXPECT_THROW(parse_cleat_shape("triangular"), InputError);
+}
+
+TEST(RoadCleat, MaxStepIsTheFineSampleSpacingInTime) {
+  CleatParameters p;  // 40 mm cleat, 0.1 m patch: sampled every 40 mm/40 = 1 mm
+  p.speed_m_per_s = 40.0 / 3.6;
+  const SpatialProfileRoad road = make_cleat_road(p);
+  EXPECT_GT(road.max_step_s(), 0.0);
+  EXPECT_TRUE(std::isfinite(road.max_step_s()));
+  EXPECT_DOUBLE_EQ(road.max_step_s(), 0.04 / 40.0 / p.speed_m_per_s);
+  p.tyre_contact_length_m = 0.02;  // now the patch is the narrower
+  EXPECT_DOUBLE_EQ(make_cleat_road(p).max_step_s(), 0.02 / 40.0 / p.speed_m_per_s);
+}
+
+TEST(RoadCleat, ADurationThatEndsOnTheCleatIsAnInputErrorNamingTheMinimum) {
+  CleatParameters p;  // at 2 m, 40 mm long, 0.1 m patch: left at 2.09 m
+  p.speed_m_per_s = 40.0 / 3.6;
+  p.duration_s = 0.1;
+  EXPECT_THROW(make_cleat_road(p), InputError);
+  try {
+    make_cleat_road(p);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("'duration_s'"), std::string::npos) << message;
+    EXPECT_NE(message.find("0.1881"), std::string::npos) << message;  // 2.09 m/(11.1 m/s)
+  }
+  p.duration_s = 2.09 / p.speed_m_per_s;  // just the passage is enough
+  EXPECT_NO_THROW(make_cleat_road(p));
+}
+
+TEST(RoadCleat, ExtremeSizesSpeedsAndRunsAreInputErrors) {
+  auto message = [](const CleatParameters& p) {
+    return testing::input_error_message([&] { make_cleat_road(p); });
+  };
+  CleatParameters p;
+  p.length_m = 1e-9;  // 4e9 samples across the patch
+  EXPECT_NE(message(p).find("'length_m'"), std::string::npos) << message(p);
+  EXPECT_NE(message(p).find("'tyre_contact_length_m'"), std::string::npos) << message(p);
+  p = {};
+  p.speed_m_per_s = 1e6;
+  EXPECT_NE(message(p).find("'speed_m_per_s'"), std::string::npos) << message(p);
+  p = {};
+  p.height_m = 1e300;  // overflowed h̄
+  EXPECT_NE(message(p).find("'height_m'"), std::string::npos) << message(p);
+  p = {};
+  p.start_distance_m = 1e9;  // a run-up of 1e12 samples
+  EXPECT_NE(message(p).find("'start_distance_m'"), std::string::npos) << message(p);
+  p = {};
+  p.duration_s = 1e9;
+  EXPECT_NE(message(p).find("'duration_s'"), std::string::npos) << message(p);
 }
 
 }  // namespace

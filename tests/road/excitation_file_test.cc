@@ -165,5 +165,94 @@ TEST_F(ExcitationFileTest, FilesAreReadRelativeToTheYamlAndTheirErrorsNameTheCsv
                   "not found");
 }
 
+// Each of these crashed (std::bad_alloc, an "internal error"), hung or ate gigabytes before.
+TEST_F(ExcitationFileTest, AdversarialValuesAreInputErrorsNamingTheKey) {
+  const std::string sweep = "type: log_sweep\ninitial_amplitude_m: 0.01\n";
+  EXPECT_CONTAINS(error_of(sweep + "duration_s: 1e9\n"), "'duration_s'");
+  const std::string high = error_of(sweep + "end_frequency_Hz: 1e6\n");
+  EXPECT_CONTAINS(high, "'end_frequency_Hz'");
+  EXPECT_CONTAINS(high, "500 Hz");
+
+  const std::string iso = "type: iso8608\nclass: B\n";
+  const std::string long_road = error_of(iso + "speed_km_per_h: 50\nduration_s: 1e9\n");
+  EXPECT_CONTAINS(long_road, "'duration_s'");
+  EXPECT_CONTAINS(long_road, "'sample_spacing_m'");
+  EXPECT_CONTAINS(long_road, "2.78e+11 samples");  // 1e9 s at 13.9 m/s every 0.05 m
+  EXPECT_CONTAINS(error_of(iso + "speed_km_per_h: 50\nduration_s: 60\nsample_spacing_m: 1e-9\n"),
+                  "'sample_spacing_m'");
+  const std::string crawl = error_of(iso + "speed_m_per_s: 1e-6\nduration_s: 10\n");
+  EXPECT_CONTAINS(crawl, "'speed_m_per_s'");
+  EXPECT_CONTAINS(crawl, "'duration_s'");
+  const std::string fast = error_of(iso + "speed_m_per_s: 1e6\nduration_s: 10\n");
+  EXPECT_CONTAINS(fast, "'speed_m_per_s'");
+  EXPECT_CONTAINS(fast, "150 m/s");
+  EXPECT_CONTAINS(error_of(iso + "speed_km_per_h: 1e6\nduration_s: 10\n"), "'speed_km_per_h'");
+  const std::string fade = error_of(iso + "speed_m_per_s: 10\nduration_s: 1\nfade_in_m: 50\n");
+  EXPECT_CONTAINS(fade, "'fade_in_m'");
+  EXPECT_CONTAINS(fade, "10 m");
+  EXPECT_CONTAINS(
+      error_of(iso + "speed_m_per_s: 10\nduration_s: 10\nband_low_cycles_per_m: 1e-9\n"),
+      "'band_low_cycles_per_m'");
+  EXPECT_CONTAINS(error_of("type: power_law\nroughness_coefficient_m3: 4.8e-7\nwaviness: 2\n"
+                           "speed_m_per_s: 5e3\nduration_s: 10\n"),
+                  "'speed_m_per_s'");
+
+  const std::string cleat = error_of(
+      "type: cleat\nshape: semicircular\nheight_m: 0.02\nlength_m: 0.04\nspeed_km_per_h: 40\n"
+      "duration_s: 0.1\n");
+  EXPECT_CONTAINS(cleat, "'duration_s'");
+  EXPECT_CONTAINS(cleat, "0.1881");  // the tyre leaves the cleat 2.09 m in, at 0.1881 s
+
+  write("data/nm.csv", "distance[m],elevation[mm]\n0,0\n1.25e-9,0\n2.5e-9,0\n3.75e-9,0\n5e-9,0\n");
+  EXPECT_CONTAINS(error_of("type: profile\nfile: data/nm.csv\nspeed_km_per_h: 50\n"),
+                  "'speed_m_per_s'");
+
+  const std::string profile_dir = error_of("type: profile\nfile: .\nspeed_km_per_h: 50\n");
+  EXPECT_CONTAINS(profile_dir, "'file'");
+  EXPECT_CONTAINS(profile_dir, "is a directory");
+  EXPECT_CONTAINS(profile_dir, "distance[m],elevation[mm]");
+  const std::string measured_dir = error_of("type: measured\nfile: data\n");
+  EXPECT_CONTAINS(measured_dir, "is a directory");
+  EXPECT_CONTAINS(measured_dir, "time[s]");
+  if (std::filesystem::exists("/dev/null")) {  // reading a device would never end (/dev/zero)
+    EXPECT_CONTAINS(error_of("type: measured\nfile: /dev/null\n"), "not a regular file");
+  }
+
+  // Values that would overflow the road's arithmetic.
+  EXPECT_CONTAINS(error_of("type: log_sweep\ninitial_amplitude_m: 1e300\n"),
+                  "'initial_amplitude_m'");
+  EXPECT_CONTAINS(error_of("type: power_law\nroughness_coefficient_m3: 4.8e7\nwaviness: 2.1\n"
+                           "speed_m_per_s: 5\nduration_s: 10\n"),
+                  "'roughness_coefficient_m3'");
+  EXPECT_CONTAINS(error_of("type: cleat\nshape: rectangular\nheight_m: 1e300\nlength_m: 1e3\n"
+                           "speed_m_per_s: 5\n"),
+                  "'height_m'");
+}
+
+TEST_F(ExcitationFileTest, EveryRoadTypeHasAPositiveFiniteMaxStep) {
+  write("data/p.csv", "distance[mm],elevation[mm]\n0,0\n100,1\n200,2\n300,1\n400,0\n");
+  write("data/m.csv", "time[ms],road[mm]\n0,0\n4,1\n8,2\n12,1\n16,0\n");
+  struct Case {
+    std::string yaml;
+    double max_step_s;
+  };
+  for (const auto& c : std::vector<Case>{
+           {"type: log_sweep\ninitial_amplitude_m: 0.01\n", 0.25 / 30.0},
+           {"type: iso8608\nclass: A\nspeed_m_per_s: 10\nduration_s: 5\n", 0.05 / 10.0},
+           {"type: power_law\nroughness_coefficient_m3: 4.8e-7\nwaviness: 2.1\n"
+            "speed_m_per_s: 20\nduration_s: 5\nsample_spacing_m: 0.025\n",
+            0.025 / 20.0},
+           {"type: cleat\nshape: rectangular\nheight_m: 0.02\nlength_m: 0.2\nspeed_m_per_s: 5\n",
+            0.1 / 40.0 / 5.0},
+           {"type: profile\nfile: data/p.csv\nspeed_m_per_s: 0.5\n", 0.1 / 0.5},
+           {"type: measured\nfile: data/m.csv\n", 0.004}}) {
+    SCOPED_TRACE(c.yaml);
+    const auto road = load_excitation(write("ok.yaml", c.yaml));
+    EXPECT_GT(road->max_step_s(), 0.0);
+    EXPECT_TRUE(std::isfinite(road->max_step_s()));
+    EXPECT_NEAR(road->max_step_s(), c.max_step_s, 1e-12 * c.max_step_s);
+  }
+}
+
 }  // namespace
 }  // namespace ridefit::road

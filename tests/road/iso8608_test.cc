@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ridefit/io/input_error.h"
+#include "support/input_error_message.h"
 
 namespace ridefit::road {
 namespace {
@@ -111,12 +112,7 @@ TEST(RoadIso8608, ARearWheelSeesTheFrontWheelsRoadAWheelbaseLater) {
 
 TEST(RoadIso8608, InvalidSettingsNameTheKey) {
   auto message = [](const Iso8608RoadParameters& p) {
-    try {
-      make_iso8608_road(p);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::input_error_message([&] { make_iso8608_road(p); });
   };
   Iso8608RoadParameters p;
   p.random.speed_m_per_s = 0.0;
@@ -130,6 +126,58 @@ TEST(RoadIso8608, InvalidSettingsNameTheKey) {
   p = {};
   p.random.band.high_cycles_per_m = 0.001;
   EXPECT_NE(message(p).find("'band_high_cycles_per_m'"), std::string::npos);
+}
+
+TEST(RoadIso8608, MaxStepIsTheSampleSpacingInTime) {
+  Iso8608RoadParameters p;
+  p.random.speed_m_per_s = 20.0;
+  p.random.duration_s = 10.0;
+  p.random.sample_spacing_m = 0.04;
+  const SpatialProfileRoad road = make_iso8608_road(p);
+  EXPECT_GT(road.max_step_s(), 0.0);
+  EXPECT_TRUE(std::isfinite(road.max_step_s()));
+  EXPECT_DOUBLE_EQ(road.max_step_s(), 0.04 / 20.0);
+}
+
+TEST(RoadIso8608, SettingsThatWouldExhaustMemoryOrStarveTheSplineAreInputErrors) {
+  auto message = [](const Iso8608RoadParameters& p) {
+    return testing::input_error_message([&] { make_iso8608_road(p); });
+  };
+  auto expect_in = [](const std::string& text, const std::vector<std::string>& fragments) {
+    for (const auto& f : fragments) EXPECT_NE(text.find(f), std::string::npos) << f << ": " << text;
+  };
+  Iso8608RoadParameters p;
+  p.random.duration_s = 1e9;  // std::bad_alloc before
+  EXPECT_THROW(make_iso8608_road(p), InputError);
+  expect_in(message(p), {"'duration_s'", "'speed_m_per_s'", "'sample_spacing_m'", "samples"});
+  p = {};
+  p.random.sample_spacing_m = 1e-9;
+  expect_in(message(p), {"'sample_spacing_m'", "more than 2e+07"});
+  p = {};
+  p.random.band.low_cycles_per_m = 1e-9;  // an FFT of 1.6e11 points
+  expect_in(message(p), {"'band_low_cycles_per_m'"});
+  p = {};
+  p.random.speed_m_per_s = 1e-6;  // 10 µm of road: 2 samples, the spline needs 5
+  p.random.duration_s = 10.0;
+  EXPECT_THROW(make_iso8608_road(p), InputError);
+  expect_in(message(p), {"'speed_m_per_s'", "'duration_s'", "at least 5 samples"});
+  p = {};
+  p.random.speed_m_per_s = 1e6;  // 8 GB
+  expect_in(message(p), {"'speed_m_per_s'", "150 m/s"});
+  p = {};
+  p.random.speed_m_per_s = 150.0;  // the limit itself is fine
+  p.random.duration_s = 1.0;
+  EXPECT_NO_THROW(make_iso8608_road(p));
+  p = {};
+  p.random.speed_m_per_s = 1.0;
+  p.random.duration_s = 2.0;
+  p.random.fade_in_m = 5.0;  // longer than the 2 m of road
+  expect_in(message(p), {"'fade_in_m'", "2 m"});
+  p.random.fade_in_m = 2.0;  // exactly the road is fine
+  EXPECT_NO_THROW(make_iso8608_road(p));
+  p = {};
+  p.random.duration_s = 1e-4;
+  expect_in(message(p), {"'duration_s'"});
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "ridefit/io/input_error.h"
+#include "support/input_error_message.h"
 
 namespace ridefit::road {
 namespace {
@@ -138,6 +139,42 @@ TEST(RoadLogSweep, InvalidParametersNameTheKey) {
   p = {};
   p.duration_s = std::nan("");
   expect_key(p, "duration_s");
+}
+
+TEST(RoadLogSweep, MaxStepIsAQuarterOfTheShortestPeriod) {
+  const LogSweep up(seed_sweep(0.01));  // 0.1 → 30 Hz
+  EXPECT_GT(up.max_step_s(), 0.0);
+  EXPECT_TRUE(std::isfinite(up.max_step_s()));
+  EXPECT_DOUBLE_EQ(up.max_step_s(), 0.25 / 30.0);
+  LogSweepParameters down = seed_sweep(0.01);  // a downward sweep: f0 is the highest
+  down.start_frequency_Hz = 40.0;
+  down.end_frequency_Hz = 2.0;
+  EXPECT_DOUBLE_EQ(LogSweep(down).max_step_s(), 0.25 / 40.0);
+}
+
+TEST(RoadLogSweep, AbsurdFrequenciesAndDurationsAreInputErrors) {
+  auto message = [](const LogSweepParameters& p) {
+    return testing::input_error_message([&] { LogSweep sweep(p); });
+  };
+  LogSweepParameters p;
+  p.end_frequency_Hz = 1e6;  // hung the integrator
+  EXPECT_THROW(LogSweep{p}, InputError);
+  EXPECT_NE(message(p).find("'end_frequency_Hz'"), std::string::npos) << message(p);
+  EXPECT_NE(message(p).find("500 Hz"), std::string::npos) << message(p);
+  p = {};
+  p.start_frequency_Hz = 501.0;
+  EXPECT_NE(message(p).find("'start_frequency_Hz'"), std::string::npos) << message(p);
+  p = {};
+  p.start_frequency_Hz = p.end_frequency_Hz = 500.0;  // the limit itself is fine
+  EXPECT_NO_THROW(LogSweep{p});
+  p = {};
+  p.duration_s = 1e9;  // 1.2e11 quarter periods of 30 Hz
+  EXPECT_THROW(LogSweep{p}, InputError);
+  EXPECT_NE(message(p).find("'duration_s'"), std::string::npos) << message(p);
+  p.duration_s = 0.999 * 2e7 * 0.25 / 30.0;  // just inside the step limit
+  EXPECT_NO_THROW(LogSweep{p});
+  p.duration_s = 1e-6;
+  EXPECT_NE(message(p).find("'duration_s'"), std::string::npos) << message(p);
 }
 
 }  // namespace

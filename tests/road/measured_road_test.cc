@@ -1,8 +1,8 @@
 #include "ridefit/road/measured_road.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ridefit/io/input_error.h"
+#include "support/input_error_message.h"
 
 namespace ridefit::road {
 namespace {
@@ -53,12 +54,7 @@ TEST_F(RoadMeasuredTest, ChannelIsConvertedShiftedToZeroAndPassesThroughItsSampl
 
 TEST_F(RoadMeasuredTest, ErrorsNameFileRowAndColumn) {
   auto error_of = [](const std::filesystem::path& csv, const std::string& channel) {
-    try {
-      load_measured_road(csv, channel);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::input_error_message([&] { load_measured_road(csv, channel); });
   };
   const std::string good = "time[s],road[m]\n0,0\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n";
   const std::string no_road = error_of(write("a.csv", good), "road_rear");
@@ -76,6 +72,37 @@ TEST_F(RoadMeasuredTest, ErrorsNameFileRowAndColumn) {
   const std::string no_time =
       error_of(write("d.csv", "t[s],road[m]\n0,0\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n"), "road");
   EXPECT_NE(no_time.find("'time'"), std::string::npos) << no_time;
+}
+
+TEST_F(RoadMeasuredTest, MaxStepIsTheTimeStep) {
+  const std::vector<double> t{0.0, 0.002, 0.004, 0.006, 0.008, 0.010};
+  const std::vector<double> h{0.0, 1e-3, 2e-3, 1e-3, 0.0, 0.0};
+  const MeasuredRoad road(t, h);
+  EXPECT_GT(road.max_step_s(), 0.0);
+  EXPECT_TRUE(std::isfinite(road.max_step_s()));
+  EXPECT_DOUBLE_EQ(road.max_step_s(), 0.002);
+}
+
+TEST_F(RoadMeasuredTest, AbsurdRecordingsAreInputErrors) {
+  auto error_of = [](const std::filesystem::path& csv) {
+    return testing::input_error_message([&] { load_measured_road(csv, "road"); });
+  };
+  const std::string directory = error_of(dir_);
+  EXPECT_NE(directory.find("is a directory"), std::string::npos) << directory;
+  EXPECT_NE(directory.find("time[s]"), std::string::npos) << directory;
+  const std::string brief =
+      error_of(write("ns.csv", "time[s],road[mm]\n0,0\n1e-9,1\n2e-9,2\n3e-9,1\n4e-9,0\n"));
+  EXPECT_NE(brief.find("ns.csv"), std::string::npos) << brief;
+  EXPECT_NE(brief.find("lasts 4e-09 s"), std::string::npos) << brief;
+  const std::string gap =
+      error_of(write("gap.csv", "time[s],road[mm]\n0,0\n1e-6,1\n2e-6,2\n3e-6,1\n1e6,0\n"));
+  EXPECT_NE(gap.find("gap.csv"), std::string::npos) << gap;
+  EXPECT_NE(gap.find("more than 2e+07"), std::string::npos) << gap;
+  const std::string high =
+      error_of(write("high.csv", "time[s],road[m]\n0,0\n1,1e300\n2,0\n3,0\n4,0\n"));
+  EXPECT_NE(high.find("elevation"), std::string::npos) << high;
+  const std::vector<double> t{0, 1, 2, 3, 4}, h{0, 0, 0, 0, 0};
+  EXPECT_NO_THROW(MeasuredRoad(t, h));
 }
 
 }  // namespace

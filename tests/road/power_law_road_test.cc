@@ -7,6 +7,7 @@
 
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/iso8608.h"
+#include "support/input_error_message.h"
 
 namespace ridefit::road {
 namespace {
@@ -74,12 +75,7 @@ TEST(RoadPowerLaw, SharesTheHarmonicMachineryWithIso8608) {
 
 TEST(RoadPowerLaw, InvalidParametersNameTheKey) {
   auto message = [](const PowerLawRoadParameters& p) {
-    try {
-      make_power_law_road(p);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return testing::input_error_message([&] { make_power_law_road(p); });
   };
   PowerLawRoadParameters p;
   p.roughness_coefficient_m3 = -1.0;
@@ -90,6 +86,31 @@ TEST(RoadPowerLaw, InvalidParametersNameTheKey) {
   p = {};
   p.random.duration_s = 0.0;
   EXPECT_NE(message(p).find("'duration_s'"), std::string::npos);
+}
+
+TEST(RoadPowerLaw, MaxStepIsTheSampleSpacingInTime) {
+  PowerLawRoadParameters p;
+  p.random.speed_m_per_s = 25.0;
+  p.random.duration_s = 5.0;
+  p.random.sample_spacing_m = 0.02;
+  const SpatialProfileRoad road = make_power_law_road(p);
+  EXPECT_GT(road.max_step_s(), 0.0);
+  EXPECT_TRUE(std::isfinite(road.max_step_s()));
+  EXPECT_DOUBLE_EQ(road.max_step_s(), 0.02 / 25.0);
+  // A rear wheel shares the profile and so the step.
+  EXPECT_DOUBLE_EQ(road.with_offset(-2.7).max_step_s(), 0.02 / 25.0);
+}
+
+TEST(RoadPowerLaw, HugeRoadsAreInputErrors) {
+  PowerLawRoadParameters p;
+  p.random.speed_m_per_s = 100.0;
+  p.random.duration_s = 1e6;
+  try {
+    make_power_law_road(p);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'duration_s'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

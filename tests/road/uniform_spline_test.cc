@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "ridefit/road/resample.h"
@@ -113,6 +114,21 @@ TEST(RoadResample, NonUniformDataGoesOnTheMedianGridWithoutOvershoot) {
       EXPECT_NEAR(s.values[k], 0.5, 1e-12) << k;
     }
   }
+}
+
+TEST(RoadResample, CountIsKnownBeforeResamplingAndAtLeastFive) {
+  const std::vector<double> uniform{0.0, 0.1, 0.2, 0.3};
+  EXPECT_EQ(resampled_count(uniform), 4.0);
+  // Median gap 0.8 m over 2 m: round(2.5) + 1 = 4 points, raised to the spline's 5.
+  const std::vector<double> x{0.0, 0.1, 0.2, 1.0, 2.0}, y{0, 0, 1, 0, 0};
+  EXPECT_EQ(resampled_count(x), 5.0);
+  const UniformSamples s = resample_uniform(x, y);
+  ASSERT_EQ(s.values.size(), 5u);
+  EXPECT_DOUBLE_EQ(s.step, 0.5);
+  // Absurd spacings give a count no allocation could hold; resample_uniform refuses it.
+  const std::vector<double> gap{0.0, 1e-9, 2e-9, 3e-9, 1e6}, zeros(5, 0.0);
+  EXPECT_GT(resampled_count(gap), 1e14);
+  EXPECT_THROW(resample_uniform(gap, zeros), std::invalid_argument);
 }
 
 }  // namespace

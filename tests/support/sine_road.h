@@ -18,6 +18,7 @@ class SineRoad : public road::RoadInput {
     return {amplitude_m_ * std::sin(omega_ * t), amplitude_m_ * omega_ * std::cos(omega_ * t)};
   }
   double duration_s() const override { return duration_s_; }
+  double max_step_s() const override { return 0.25 * 2.0 * std::numbers::pi / omega_; }
 
  private:
   double amplitude_m_;

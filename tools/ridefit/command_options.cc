@@ -2,22 +2,66 @@
 
 #include <fmt/core.h>
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <iostream>
 
 #include "ridefit/io/input_error.h"
 
 namespace ridefit::cli {
 
+CLI::Validator positive_number(const std::string& unit) {
+  return CLI::Validator(
+      [unit](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || !(value > 0.0)) {
+          return fmt::format("expected a finite number > 0{}, got '{}'",
+                             unit.empty() ? "" : " (" + unit + ")", text);
+        }
+        return "";
+      },
+      "NUMBER > 0");
+}
+
+ProgressReporter::ProgressReporter(std::string what, double end_time_s)
+    : what_(std::move(what)),
+      end_time_s_(end_time_s),
+      start_wall_s_(
+          std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+              .count()),
+      tty_(isatty(fileno(stderr)) != 0) {}
+
+void ProgressReporter::operator()(double time_s) {
+  const int decile = static_cast<int>(10.0 * time_s / end_time_s_);
+  if (decile == last_decile_) return;
+  last_decile_ = decile;
+  const double now =
+      std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  if (now - start_wall_s_ < 1.0) return;
+  printed_ = true;
+  std::cerr << fmt::format("{}{}: {:3d} % of {:g} s simulated{}", tty_ ? "\r" : "", what_,
+                           10 * decile, end_time_s_, tty_ ? "" : "\n")
+            << std::flush;
+}
+
+void ProgressReporter::finish() {
+  if (printed_ && tty_) std::cerr << "\n";
+}
+
 void SolverFlags::add_to(CLI::App& command) {
   command.add_option("--method", method, "Integrator: cvode (adaptive BDF) or rk4 (fixed step)")
       ->check(CLI::IsMember({"cvode", "rk4"}))
       ->capture_default_str();
-  command.add_option("--rtol", relative_tolerance, "CVODE relative tolerance")
-      ->check(CLI::PositiveNumber)
+  command.add_option("--rtol", relative_tolerance, "CVODE relative tolerance, in (0, 0.1]")
+      ->check(positive_number(""))
       ->capture_default_str();
   command.add_option("--step", fixed_step_s, "RK4 fixed step [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number("s"))
       ->capture_default_str();
 }
 

@@ -21,6 +21,27 @@ struct SolverFlags {
   simulate::IntegratorOptions options() const;
 };
 
+// A finite number > 0, with a message that says so (CLI11's own range check prints a
+// 309-digit upper bound). `unit` is shown in the message, e.g. "Hz".
+CLI::Validator positive_number(const std::string& unit);
+
+// Reports progress on stderr for runs that take longer than a second: nothing for short
+// runs, then a line per 10 % of simulated time (rewritten in place on a terminal).
+class ProgressReporter {
+ public:
+  ProgressReporter(std::string what, double end_time_s);
+  void operator()(double time_s);
+  void finish();
+
+ private:
+  std::string what_;
+  double end_time_s_;
+  double start_wall_s_;
+  int last_decile_ = -1;
+  bool printed_ = false;
+  bool tty_;
+};
+
 // `--set key=value` overrides of numeric model keys; a malformed entry is an InputError.
 std::map<std::string, double> parse_overrides(const std::vector<std::string>& entries);
 

@@ -5,11 +5,14 @@
 
 #include <cstdio>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <set>
 
 #include "command_options.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/quarter_car_file.h"
@@ -49,11 +52,31 @@ void run(const FrictionStudyFlags& flags) {
   const auto model_file =
       io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), "stick_slip");
   for (double f : flags.coulomb_forces_N) {
-    if (!(f >= 0.0)) {
-      throw InputError(fmt::format("--coulomb-forces: {} N is negative; forces are >= 0", f));
+    if (!std::isfinite(f) || f < 0.0 || f > 1e5) {
+      throw InputError(fmt::format(
+          "--coulomb-forces: {} N; every force must be a finite number in [0, 1e5] N", f));
     }
   }
-  if (!flags.output_dir.empty()) std::filesystem::create_directories(flags.output_dir);
+  for (const auto& [key, value] : parse_overrides(flags.overrides)) {
+    if (key == "coulomb_force_N") {
+      throw InputError("--set coulomb_force_N: the study sets Fc itself; use --coulomb-forces");
+    }
+  }
+  // Every excitation is loaded and every output name checked before anything runs, so a
+  // bad input never leaves part of the results behind.
+  std::vector<std::unique_ptr<road::RoadInput>> roads;
+  std::set<std::string> stems;
+  for (const auto& excitation_file : flags.excitation_files) {
+    roads.push_back(road::load_excitation(excitation_file));
+    const std::string stem = std::filesystem::path(excitation_file).stem().string();
+    if (!stems.insert(stem).second) {
+      throw InputError(
+          fmt::format("{}: another excitation has the same name '{}', and both "
+                      "would write {}_psd.csv; rename one",
+                      excitation_file, stem, stem));
+    }
+  }
+  if (!flags.output_dir.empty()) io::prepare_output_directory(flags.output_dir, "-o");
 
   study::FrictionStudyOptions options;
   options.coulomb_forces_N = flags.coulomb_forces_N;
@@ -62,8 +85,9 @@ void run(const FrictionStudyFlags& flags) {
 
   nlohmann::json summary = {{"model", flags.model_file}, {"excitations", nlohmann::json::array()}};
   const bool tty = isatty(fileno(stderr)) != 0;
-  for (const auto& excitation_file : flags.excitation_files) {
-    const auto road = road::load_excitation(excitation_file);
+  for (std::size_t e = 0; e < flags.excitation_files.size(); ++e) {
+    const std::string& excitation_file = flags.excitation_files[e];
+    const auto& road = roads[e];
     std::size_t done = 0;
     const auto result = study::run_friction_study(
         model_file.parameters, *road, options, [&](const study::FrictionCase& c) {
@@ -137,7 +161,7 @@ void register_friction_study(CLI::App& app) {
   command->add_option("-o,--output-dir", flags->output_dir,
                       "Directory for the PSD CSV files (one per excitation)");
   command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number("Hz"))
       ->capture_default_str();
   command->add_option("--set", flags->overrides, "Override a model key (repeatable)");
   command->add_flag("--json", flags->json, "Print the results as JSON");

@@ -5,6 +5,7 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "ridefit/io/input_error.h"
 #include "subcommands.h"
@@ -24,6 +25,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const ridefit::RunError& e) {
     std::cerr << "ridefit: run failed: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ridefit: run failed: out of memory (lower the output rate or duration)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "ridefit: internal error: " << e.what() << "\n";

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "command_options.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/road/excitation_file.h"
@@ -46,6 +47,9 @@ io::CsvTable to_table(const simulate::QuarterCarResponse& r) {
 }
 
 void run(const SimulateFlags& flags) {
+  if (!flags.output_file.empty()) {
+    io::check_output_file(flags.output_file, {flags.model_file, flags.excitation_file}, "-o");
+  }
   const auto model_file =
       io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), flags.damper_state);
   const auto road = road::load_excitation(flags.excitation_file);
@@ -55,10 +59,14 @@ void run(const SimulateFlags& flags) {
   options.output_rate_Hz = flags.output_rate_Hz;
   options.duration_s = flags.duration_s;
   options.integrator = flags.solver.options();
+  ProgressReporter progress("simulate",
+                            options.duration_s > 0.0 ? options.duration_s : road->duration_s());
+  options.integrator.progress = [&progress](double t) { progress(t); };
   const auto start = std::chrono::steady_clock::now();
   const auto response = simulate::simulate(car, *road, options);
   const double elapsed_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
 
   if (!flags.output_file.empty()) to_table(response).write(flags.output_file);
 
@@ -112,12 +120,12 @@ void register_simulate(CLI::App& app) {
       ->check(CLI::ExistingFile);
   command->add_option("-o,--output", flags->output_file, "Output CSV (written atomically)");
   command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
-      ->check(CLI::PositiveNumber)
+      ->check(positive_number("Hz"))
       ->capture_default_str();
   command
       ->add_option("--duration", flags->duration_s,
                    "Simulated time [s] (default: the excitation's duration)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number("s"));
   command
       ->add_option("--damper-state", flags->damper_state,
                    "Override the model's damper_state: slip, stick or stick_slip")

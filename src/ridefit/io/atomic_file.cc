@@ -17,6 +17,10 @@ void write_atomically(const std::filesystem::path& path,
     throw InputError(fmt::format("{}: cannot write, directory '{}' does not exist", path.string(),
                                  dir.string()));
   }
+  if (std::filesystem::exists(path) && !std::filesystem::is_regular_file(path)) {
+    throw InputError(
+        fmt::format("{}: cannot write, it exists and is not a regular file", path.string()));
+  }
   const std::filesystem::path tmp =
       dir / fmt::format(".{}.tmp{}", path.filename().string(), static_cast<long>(getpid()));
   try {
@@ -30,6 +34,43 @@ void write_atomically(const std::filesystem::path& path,
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
     throw;
+  }
+}
+
+void check_output_file(const std::filesystem::path& path,
+                       const std::vector<std::filesystem::path>& inputs, const std::string& flag) {
+  namespace fs = std::filesystem;
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir)) {
+    throw InputError(
+        fmt::format("{} {}: directory '{}' does not exist", flag, path.string(), dir.string()));
+  }
+  if (fs::is_directory(path)) {
+    throw InputError(fmt::format("{} {}: is a directory, expected a file path such as {}/out.csv",
+                                 flag, path.string(), path.string()));
+  }
+  if (fs::exists(path) && !fs::is_regular_file(path)) {
+    throw InputError(fmt::format("{} {}: exists and is not a regular file", flag, path.string()));
+  }
+  for (const auto& input : inputs) {
+    std::error_code ec;
+    if (fs::exists(path) && fs::equivalent(path, input, ec)) {
+      throw InputError(fmt::format("{} {}: is also an input of this run; choose another file", flag,
+                                   path.string()));
+    }
+  }
+}
+
+void prepare_output_directory(const std::filesystem::path& path, const std::string& flag) {
+  namespace fs = std::filesystem;
+  if (fs::exists(path) && !fs::is_directory(path)) {
+    throw InputError(fmt::format("{} {}: exists and is not a directory", flag, path.string()));
+  }
+  std::error_code ec;
+  fs::create_directories(path, ec);
+  if (ec) {
+    throw InputError(
+        fmt::format("{} {}: cannot create the directory: {}", flag, path.string(), ec.message()));
   }
 }
 

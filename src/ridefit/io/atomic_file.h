@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <string>
+#include <vector>
 
 namespace ridefit::io {
 
@@ -12,5 +14,15 @@ namespace ridefit::io {
 // propagates. An unwritable destination is an InputError naming the path.
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write);
+
+// Checks, before any work is done, that `path` can take an output file: its directory exists,
+// it is not a directory or a device, and it is none of `inputs` (a run must not overwrite
+// its own input). `flag` names the option in messages (e.g. "-o"). Throws InputError.
+void check_output_file(const std::filesystem::path& path,
+                       const std::vector<std::filesystem::path>& inputs, const std::string& flag);
+
+// The same for an output directory: it is created if missing; an existing non-directory is
+// an InputError.
+void prepare_output_directory(const std::filesystem::path& path, const std::string& flag);
 
 }  // namespace ridefit::io

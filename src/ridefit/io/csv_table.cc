@@ -140,6 +140,34 @@ Header parse_header_cell(std::string_view cell, std::size_t index, const std::st
   return header;
 }
 
+// The units as `path`'s header row wrote them (road[mm], where the column holds SI, road[m]),
+// for messages: read back from the file, since a column keeps only its SI unit. Empty when
+// the table was not read from a file or the header does not match `columns` (any more).
+std::vector<std::string> file_units(const std::filesystem::path& path,
+                                    const std::vector<CsvColumn>& columns) {
+  std::ifstream in(path);
+  std::string line;
+  if (path.empty() || !in || !std::getline(in, line)) return {};
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  std::string_view header_line = line;
+  if (header_line.starts_with("\xEF\xBB\xBF")) header_line.remove_prefix(3);  // UTF-8 BOM
+  const std::vector<std::string_view> cells = split(header_line);
+  if (cells.size() != columns.size()) return {};
+  std::vector<std::string> units;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const std::size_t open = cells[c].find('[');
+    if (open == std::string_view::npos || cells[c].back() != ']') return {};
+    const std::string_view unit = trim(cells[c].substr(open + 1, cells[c].size() - open - 2));
+    const auto conversion = find_unit(unit);
+    if (trim(cells[c].substr(0, open)) != columns[c].name || !conversion ||
+        conversion->si_unit != columns[c].unit) {
+      return {};
+    }
+    units.emplace_back(unit);
+  }
+  return units;
+}
+
 }  // namespace
 
 UnitConversion unit_to_si(const std::string& unit) {
@@ -256,9 +284,11 @@ const CsvColumn& CsvTable::column(const std::string& name) const {
   for (const auto& column : columns_) {
     if (column.name == name) return column;
   }
+  const std::vector<std::string> units = file_units(source_, columns_);
   std::string names;
-  for (const auto& column : columns_) {
-    names += (names.empty() ? "" : ", ") + column.name + "[" + column.unit + "]";
+  for (std::size_t c = 0; c < columns_.size(); ++c) {
+    names += (names.empty() ? "" : ", ") + columns_[c].name + "[" +
+             (units.empty() ? columns_[c].unit : units[c]) + "]";
   }
   throw InputError(fmt::format("{}: no column '{}'; the columns are: {}", source_.string(), name,
                                names.empty() ? "(none)" : names));

@@ -2,8 +2,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <vector>
 
 #include "ridefit/io/input_error.h"
@@ -14,9 +17,18 @@ YamlMap YamlMap::load(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) {
     throw InputError(fmt::format("{}: file not found", path.string()));
   }
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(fmt::format("{}: is a directory, expected a YAML file", path.string()));
+  }
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path.string());
+    const std::vector<YAML::Node> documents = YAML::LoadAllFromFile(path.string());
+    if (documents.size() > 1) {
+      throw InputError(
+          fmt::format("{}: holds {} YAML documents (separated by ---); expected exactly one",
+                      path.string(), documents.size()));
+    }
+    if (!documents.empty()) root = documents.front();
   } catch (const YAML::Exception& e) {
     throw InputError(fmt::format("{}:{}:{}: not valid YAML: {}", path.string(), e.mark.line + 1,
                                  e.mark.column + 1, e.msg));
@@ -29,7 +41,19 @@ YamlMap YamlMap::load(const std::filesystem::path& path) {
 }
 
 YamlMap::YamlMap(YAML::Node node, std::filesystem::path path, std::string where)
-    : node_(std::move(node)), path_(std::move(path)), where_(std::move(where)) {}
+    : node_(std::move(node)), path_(std::move(path)), where_(std::move(where)) {
+  // yaml-cpp keeps duplicate keys and returns the first: a second value would be ignored.
+  std::map<std::string, int> seen;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.Scalar();
+    const int line = entry.first.Mark().line + 1;
+    const auto [it, inserted] = seen.emplace(key, line);
+    if (!inserted) {
+      throw InputError(fmt::format("{}: duplicate key '{}' (lines {} and {}); give it once",
+                                   path_.string(), key, it->second, line));
+    }
+  }
+}
 
 std::string YamlMap::locate(const std::string& key) const {
   const std::string full = where_.empty() ? key : where_ + "." + key;
@@ -41,7 +65,20 @@ bool YamlMap::has(const std::string& key) const { return static_cast<bool>(node_
 YAML::Node YamlMap::required(const std::string& key) const {
   used_.insert(key);
   const YAML::Node value = node_[key];
-  if (!value || value.IsNull()) {
+  if (value && value.IsNull()) {
+    throw InputError(fmt::format("{} has no value", locate(key)));
+  }
+  if (!value) {
+    // A key that differs only in case is a typo the user will not spot.
+    for (const auto& entry : node_) {
+      const std::string other = entry.first.Scalar();
+      if (other.size() == key.size() &&
+          std::equal(other.begin(), other.end(), key.begin(),
+                     [](char a, char b) { return std::tolower(a) == std::tolower(b); })) {
+        throw InputError(fmt::format("{} is missing; found '{}' instead (keys are case-sensitive)",
+                                     locate(key), other));
+      }
+    }
     throw InputError(fmt::format("{} is missing (required)", locate(key)));
   }
   return value;
@@ -77,6 +114,22 @@ double YamlMap::non_negative(const std::string& key) const {
   const double v = number(key);
   if (v < 0.0) {
     throw InputError(fmt::format("{} is {}, expected a value >= 0", locate(key), v));
+  }
+  return v;
+}
+
+double YamlMap::positive_up_to(const std::string& key, double hi) const {
+  const double v = number(key);
+  if (!(v > 0.0) || v > hi) {
+    throw InputError(fmt::format("{} is {}, expected a value > 0 and <= {:g}", locate(key), v, hi));
+  }
+  return v;
+}
+
+double YamlMap::non_negative_up_to(const std::string& key, double hi) const {
+  const double v = number(key);
+  if (v < 0.0 || v > hi) {
+    throw InputError(fmt::format("{} is {}, expected a value in [0, {:g}]", locate(key), v, hi));
   }
   return v;
 }

@@ -27,8 +27,11 @@ class YamlMap {
 
   // A required real number; `min_exclusive`/`min_inclusive` express range rules.
   double number(const std::string& key) const;
-  double positive(const std::string& key) const;                         // > 0
-  double non_negative(const std::string& key) const;                     // >= 0
+  double positive(const std::string& key) const;      // > 0
+  double non_negative(const std::string& key) const;  // >= 0
+  // Physically plausible ranges: 0 < v <= hi, and 0 <= v <= hi.
+  double positive_up_to(const std::string& key, double hi) const;
+  double non_negative_up_to(const std::string& key, double hi) const;
   double number_in(const std::string& key, double lo, double hi) const;  // lo <= v <= hi
   double number_or(const std::string& key, double fallback) const;
   long integer(const std::string& key) const;

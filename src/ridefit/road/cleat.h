@@ -32,7 +32,10 @@ struct CleatParameters {
   // 0 = until the tyre has left the cleat plus kCleatSettleTime_s for the car to settle.
   double duration_s = 0.0;
 
-  // Throws InputError naming the field (as a YAML key) of the first invalid value.
+  // Throws InputError naming the field (as a YAML key) of the first invalid value. Besides
+  // signs: height_m <= 1 m, speed <= 150 m/s, a non-zero duration_s no shorter than the time
+  // the contact patch takes to leave the cleat (nor than 1 ms), at most 2e7 samples across
+  // cleat and patch and at most 2e7 samples of road over the run (road_limits.h).
   void validate() const;
 };
 

@@ -14,6 +14,7 @@
 #include "ridefit/road/measured_road.h"
 #include "ridefit/road/power_law_road.h"
 #include "ridefit/road/profile_road.h"
+#include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {
 namespace {
@@ -28,12 +29,14 @@ double read_speed_m_per_s(const io::YamlMap& file) {
                     "give exactly one",
                     file.path().string()));
   }
-  if (kmh) return file.positive("speed_km_per_h") / 3.6;
-  if (!si) {
+  if (!si && !kmh) {
     throw InputError(fmt::format("{} is missing (required; or give speed_km_per_h)",
                                  file.locate("speed_m_per_s")));
   }
-  return file.positive("speed_m_per_s");
+  const char* key = kmh ? "speed_km_per_h" : "speed_m_per_s";
+  const double speed_m_per_s = kmh ? file.positive(key) / 3.6 : file.positive(key);
+  check_speed_m_per_s(speed_m_per_s, key);  // names the key given
+  return speed_m_per_s;
 }
 
 RandomRoadParameters read_random(const io::YamlMap& file) {

@@ -49,7 +49,9 @@ namespace ridefit::road {
 //   channel: road              # default road
 //
 // Unknown keys, missing keys, wrong types, out-of-range values and both or neither speed
-// keys are InputErrors naming the file and the key.
+// keys are InputErrors naming the file and the key. Beyond each road's own ranges, the limits
+// of road_limits.h apply: speed <= 150 m/s (540 km/h), sweep frequencies <= 500 Hz, at most
+// 2e7 road samples (or steps of max_step_s()) per run, runs of at least 1 ms.
 std::unique_ptr<RoadInput> load_excitation(const std::filesystem::path& yaml_file);
 
 }  // namespace ridefit::road

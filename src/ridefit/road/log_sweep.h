@@ -13,7 +13,9 @@ struct LogSweepParameters {
   double end_amplitude_m = 1e-4;      // A1; the seed's signals use A1 = A0/100
   double duration_s = 60.0;           // T
 
-  // Throws InputError naming the field (as a YAML key) of the first invalid value.
+  // Throws InputError naming the field (as a YAML key) of the first invalid value: both
+  // frequencies in (0, 500] Hz, amplitudes in (0, 1] m, 1 ms <= T and at most 2e7 steps of
+  // max_step_s() (road_limits.h).
   void validate() const;
 };
 
@@ -39,6 +41,8 @@ class LogSweep : public RoadInput {
 
   RoadSample at(double time_s) const override;
   double duration_s() const override { return parameters_.duration_s; }
+  // A quarter of the shortest period, 0.25/max(f0, f1).
+  double max_step_s() const override;
 
   double instantaneous_frequency_Hz(double time_s) const;
   double amplitude_m(double time_s) const;

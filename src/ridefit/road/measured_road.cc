@@ -2,16 +2,21 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/resample.h"
+#include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {
 namespace {
 
 constexpr std::size_t kMinimumSamples = 5;  // the B-spline's end-slope estimate needs 5
+// Elevations beyond this are no road (and would overflow the spline's arithmetic near 1e308).
+constexpr double kMaxElevation_m = 1e4;
 
 }  // namespace
 
@@ -23,13 +28,33 @@ UniformSpline MeasuredRoad::make_signal(std::span<const double> time_s,
                     "got {} times and {} elevations",
                     kMinimumSamples, time_s.size(), elevation_m.size()));
   }
-  for (std::size_t k = 1; k < time_s.size(); ++k) {
-    if (!(time_s[k] > time_s[k - 1])) {
+  for (std::size_t k = 0; k < time_s.size(); ++k) {
+    if (k > 0 && !(time_s[k] > time_s[k - 1])) {
       throw InputError(
           fmt::format("measured road sample {}: time {} s is not greater than the "
                       "previous {} s; time must be strictly increasing",
                       k, time_s[k], time_s[k - 1]));
     }
+    if (!(std::abs(elevation_m[k]) <= kMaxElevation_m)) {
+      throw InputError(fmt::format(
+          "measured road sample {}: elevation {:g} m, expected a finite value within ±{:g} m", k,
+          elevation_m[k], kMaxElevation_m));
+    }
+  }
+  const double length_s = time_s.back() - time_s.front();
+  if (!(length_s >= kMinRoadDuration_s)) {
+    throw InputError(fmt::format(
+        "the measured road lasts {:g} s (time {:g} to {:g} s), expected at least {:g} s (one "
+        "output sample at 1 kHz); check the time column's unit",
+        length_s, time_s.front(), time_s.back(), kMinRoadDuration_s));
+  }
+  const double samples = resampled_count(time_s);
+  if (!(samples <= kMaxRoadSamples) || !std::isfinite(length_s)) {
+    throw InputError(fmt::format(
+        "the measured road lasts {:g} s (time {:g} to {:g} s) and would be resampled at its "
+        "median time step to {:.3g} samples, more than {:g}; give a shorter recording or sample "
+        "it more evenly",
+        length_s, time_s.front(), time_s.back(), samples, kMaxRoadSamples));
   }
   const UniformSamples uniform = resample_uniform(time_s, elevation_m);
   return UniformSpline(uniform.values, 0.0, uniform.step);
@@ -43,6 +68,10 @@ RoadSample MeasuredRoad::at(double time_s) const {
 }
 
 MeasuredRoad load_measured_road(const std::filesystem::path& csv_file, const std::string& channel) {
+  check_data_file(csv_file,
+                  fmt::format("a measurement CSV file with a header row like time[s],{}[mm] (time "
+                              "in s or ms, the channel in m or mm) and at least {} data rows",
+                              channel, kMinimumSamples));
   const io::CsvTable table = io::CsvTable::read(csv_file);
   const std::vector<double>& time = table.time_s();
   const io::CsvColumn& road = table.column(channel);
@@ -54,7 +83,11 @@ MeasuredRoad load_measured_road(const std::filesystem::path& csv_file, const std
     throw InputError(fmt::format("{}: {} data rows, a measured road needs at least {}",
                                  csv_file.string(), table.rows(), kMinimumSamples));
   }
-  return MeasuredRoad(time, road.values);
+  try {
+    return MeasuredRoad(time, road.values);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", csv_file.string(), e.what()));
+  }
 }
 
 }  // namespace ridefit::road

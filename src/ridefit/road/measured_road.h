@@ -19,11 +19,14 @@ namespace ridefit::road {
 // holds the end elevation.
 class MeasuredRoad : public RoadInput {
  public:
-  // At least 5 samples with strictly increasing time.
+  // At least 5 samples with strictly increasing time over at least 1 ms, elevations within
+  // ±10 km, at most 2e7 samples after resampling (road_limits.h); else InputError.
   MeasuredRoad(std::span<const double> time_s, std::span<const double> elevation_m);
 
   RoadSample at(double time_s) const override;
   double duration_s() const override { return signal_.end(); }
+  // The (resampled) time step.
+  double max_step_s() const override { return signal_.step(); }
 
   // The recording's time of the first sample (at(0)).
   double start_time_s() const { return start_time_s_; }

@@ -32,7 +32,8 @@ struct PowerLawRoadParameters {
   RandomRoadParameters random;
 
   PowerLawSpectrum spectrum() const { return {1.0, roughness_coefficient_m3, waviness}; }
-  // Throws InputError naming the field (as a YAML key) of the first invalid value.
+  // Throws InputError naming the field (as a YAML key) of the first invalid value; the band
+  // RMS elevation must be at most 10 m (a mistyped Cr would overflow the profile).
   void validate() const;
 };
 

@@ -3,15 +3,19 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <string>
 
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/resample.h"
+#include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {
 namespace {
 
 constexpr std::size_t kMinimumPoints = 5;  // the B-spline's end-slope estimate needs 5
+// Elevations beyond this are no road (and would overflow the spline's arithmetic near 1e308).
+constexpr double kMaxElevation_m = 1e4;
 
 const std::vector<double>& length_column(const io::CsvTable& table, const std::string& name) {
   const io::CsvColumn& column = table.column(name);
@@ -33,26 +37,58 @@ SpatialProfileRoad make_profile_road(std::span<const double> distance_m,
                     "got {} distances and {} elevations",
                     kMinimumPoints, distance_m.size(), elevation_m.size()));
   }
-  for (std::size_t k = 1; k < distance_m.size(); ++k) {
-    if (!(distance_m[k] > distance_m[k - 1])) {
+  for (std::size_t k = 0; k < distance_m.size(); ++k) {
+    if (k > 0 && !(distance_m[k] > distance_m[k - 1])) {
       throw InputError(
           fmt::format("road profile point {}: distance {} m is not greater than the "
                       "previous {} m; distance must be strictly increasing",
                       k, distance_m[k], distance_m[k - 1]));
     }
+    if (!(std::abs(elevation_m[k]) <= kMaxElevation_m)) {
+      throw InputError(fmt::format(
+          "road profile point {}: elevation {:g} m, expected a finite value within ±{:g} m", k,
+          elevation_m[k], kMaxElevation_m));
+    }
   }
-  if (!(parameters.speed_m_per_s > 0.0) || !std::isfinite(parameters.speed_m_per_s)) {
+  check_speed_m_per_s(parameters.speed_m_per_s);
+  if (!std::isfinite(parameters.offset_m)) {
     throw InputError(
-        fmt::format("key 'speed_m_per_s' is {}, expected a value > 0", parameters.speed_m_per_s));
+        fmt::format("key 'offset_m' is {}, expected a finite number", parameters.offset_m));
+  }
+  const double span_m = distance_m.back() - distance_m.front();
+  const double points = resampled_count(distance_m);
+  if (!(points <= kMaxRoadSamples) || !std::isfinite(span_m)) {
+    throw InputError(fmt::format(
+        "the profile spans {:g} m (distance {:g} to {:g} m) and would be resampled at its median "
+        "point spacing to {:.3g} points, more than {:g}; give a shorter profile or space its "
+        "points more evenly",
+        span_m, distance_m.front(), distance_m.back(), points, kMaxRoadSamples));
   }
   const UniformSamples uniform = resample_uniform(distance_m, elevation_m);
   const double start = distance_m.front() + parameters.offset_m;
-  const double duration_s = (distance_m.back() - start) / parameters.speed_m_per_s;
+  const double run_m = distance_m.back() - start;
+  const double duration_s = run_m / parameters.speed_m_per_s;
   if (!(duration_s > 0.0)) {
     throw InputError(
         fmt::format("key 'offset_m' is {} m, which starts the tyre at or beyond the "
                     "profile's end ({} m after its start)",
-                    parameters.offset_m, distance_m.back() - distance_m.front()));
+                    parameters.offset_m, span_m));
+  }
+  if (!(duration_s >= kMinRoadDuration_s)) {
+    throw InputError(fmt::format(
+        "keys 'speed_m_per_s' and 'offset_m': driving the {:g} m from offset_m = {:g} m to the "
+        "end of the profile (which spans {:g} m) at {:g} m/s takes {:g} s, shorter than {:g} s "
+        "(one output sample at 1 kHz); use a longer profile, a lower speed or a smaller "
+        "offset_m",
+        run_m, parameters.offset_m, span_m, parameters.speed_m_per_s, duration_s,
+        kMinRoadDuration_s));
+  }
+  if (!(run_m / uniform.step <= kMaxRoadSamples)) {
+    throw InputError(fmt::format(
+        "key 'offset_m' is {:g} m: the tyre drives {:g} m to the end of a profile sampled every "
+        "{:g} m, {:.3g} integrator steps, more than {:g}; expected offset_m >= {:g} m",
+        parameters.offset_m, run_m, uniform.step, run_m / uniform.step, kMaxRoadSamples,
+        span_m - kMaxRoadSamples * uniform.step));
   }
   return SpatialProfileRoad(UniformSpline(uniform.values, uniform.start, uniform.step),
                             parameters.speed_m_per_s, duration_s, distance_m.front(),
@@ -61,6 +97,10 @@ SpatialProfileRoad make_profile_road(std::span<const double> distance_m,
 
 SpatialProfileRoad load_profile_road(const std::filesystem::path& csv_file,
                                      const ProfileRoadParameters& parameters) {
+  check_data_file(csv_file, fmt::format("a road profile CSV file with a header row like "
+                                        "distance[m],elevation[mm] (lengths in m or mm) and at "
+                                        "least {} data rows",
+                                        kMinimumPoints));
   const io::CsvTable table = io::CsvTable::read(csv_file);
   const std::vector<double>& distance = length_column(table, "distance");
   const std::vector<double>& elevation = length_column(table, "elevation");
@@ -69,7 +109,13 @@ SpatialProfileRoad load_profile_road(const std::filesystem::path& csv_file,
     throw InputError(fmt::format("{}: {} data rows, a road profile needs at least {}",
                                  csv_file.string(), table.rows(), kMinimumPoints));
   }
-  return make_profile_road(distance, elevation, parameters);
+  try {
+    return make_profile_road(distance, elevation, parameters);
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.starts_with("key")) throw;  // about a YAML key, not the file
+    throw InputError(fmt::format("{}: {}", csv_file.string(), message));
+  }
 }
 
 }  // namespace ridefit::road

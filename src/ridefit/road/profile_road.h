@@ -22,13 +22,18 @@ struct ProfileRoadParameters {
 // from the data) gives h and dh/dx; before and after the profile the road holds its first
 // and last elevation. A profile that does not start at h = 0 starts the car with a step:
 // subtract the first elevation in the data if the car should start at rest.
+//
+// InputErrors: elevations beyond ±10 km, speed beyond 150 m/s, more than 2e7 points after
+// resampling or 2e7 samples of run (a far negative offset_m), a run shorter than 1 ms
+// (road_limits.h).
 SpatialProfileRoad make_profile_road(std::span<const double> distance_m,
                                      std::span<const double> elevation_m,
                                      const ProfileRoadParameters& parameters);
 
 // The same from a CSV with columns `distance[<length unit>]` and `elevation[<length unit>]`
 // (m or mm; other columns are ignored). A non-increasing distance names its row; too few
-// rows, a missing column or a non-length unit are InputErrors naming the file.
+// rows, a missing column, a non-length unit, a directory or other non-regular file are
+// InputErrors naming the file.
 SpatialProfileRoad load_profile_road(const std::filesystem::path& csv_file,
                                      const ProfileRoadParameters& parameters);
 

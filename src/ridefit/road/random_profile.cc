@@ -12,6 +12,7 @@
 #include <random>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {
 namespace {
@@ -32,6 +33,19 @@ void check_spacing(const SpatialBand& band, double spacing_m) {
   }
 }
 
+// The FFT must hold 8 harmonics in the band's lowest octave: 8/(n_low·spacing) points.
+void check_fft_size(const SpatialBand& band, double spacing_m) {
+  const double points = 8.0 / (band.low_cycles_per_m * spacing_m);
+  if (!(points <= kMaxRoadSamples)) {
+    throw InputError(fmt::format(
+        "key 'band_low_cycles_per_m' is {:g}: 8 harmonics in its octave at sample_spacing_m = "
+        "{:g} m take an FFT of 8/(low·spacing) = {:.3g} points, more than {:g}; expected "
+        "band_low_cycles_per_m >= {:g} (a wavelength of at most {:g} m)",
+        band.low_cycles_per_m, spacing_m, points, kMaxRoadSamples,
+        8.0 / (kMaxRoadSamples * spacing_m), kMaxRoadSamples * spacing_m / 8.0));
+  }
+}
+
 // The quintic smoothstep: 0 at s = 0 and 1 at s = 1 with zero slope and curvature at both.
 double smoothstep5(double s) { return s * s * s * (s * (6.0 * s - 15.0) + 10.0); }
 
@@ -43,6 +57,12 @@ RandomProfile random_profile(const std::function<double(double)>& psd_m3, const 
   if (!(length_m > 0.0) || !std::isfinite(length_m)) {
     throw InputError(fmt::format("profile length {} m, expected > 0", length_m));
   }
+  if (!(length_m / spacing_m + 1.0 <= kMaxRoadSamples)) {
+    throw InputError(fmt::format(
+        "profile length {:g} m at sample_spacing_m = {:g} m is {:.3g} samples, more than {:g}",
+        length_m, spacing_m, length_m / spacing_m + 1.0, kMaxRoadSamples));
+  }
+  check_fft_size(band, spacing_m);
   const auto samples = static_cast<std::size_t>(std::ceil(length_m / spacing_m)) + 1;
   const auto lowest_octave =
       static_cast<std::size_t>(std::ceil(8.0 / (band.low_cycles_per_m * spacing_m)));
@@ -77,20 +97,46 @@ RandomProfile random_profile(const std::function<double(double)>& psd_m3, const 
   std::vector<double> elevation;
   fft.inv(elevation, spectrum, static_cast<Eigen::Index>(n_fft));
   elevation.resize(samples);
+  elevation.shrink_to_fit();  // the FFT's tail beyond the road is up to half of it
   return {std::move(elevation), spacing_m, dn, period_m};
 }
 
 void RandomRoadParameters::validate() const {
-  if (!(speed_m_per_s > 0.0) || !std::isfinite(speed_m_per_s)) {
-    throw InputError(fmt::format("key 'speed_m_per_s' is {}, expected a value > 0", speed_m_per_s));
-  }
-  if (!(duration_s > 0.0) || !std::isfinite(duration_s)) {
-    throw InputError(fmt::format("key 'duration_s' is {}, expected a value > 0", duration_s));
+  check_speed_m_per_s(speed_m_per_s);
+  if (!(duration_s >= kMinRoadDuration_s) || !std::isfinite(duration_s)) {
+    throw InputError(fmt::format("key 'duration_s' is {}, expected a finite value >= {:g} s",
+                                 duration_s, kMinRoadDuration_s));
   }
   check_spacing(band, sample_spacing_m);
   if (!(fade_in_m >= 0.0) || !std::isfinite(fade_in_m)) {
     throw InputError(fmt::format("key 'fade_in_m' is {}, expected a value >= 0", fade_in_m));
   }
+  const double length_m = speed_m_per_s * duration_s;
+  const double samples = length_m / sample_spacing_m + 1.0;
+  if (!(samples <= kMaxRoadSamples)) {
+    throw InputError(fmt::format(
+        "keys 'duration_s', 'speed_m_per_s' and 'sample_spacing_m': {:g} s at {:g} m/s is {:g} m "
+        "of road, {:.3g} samples {:g} m apart, more than {:g}; shorten duration_s, lower the "
+        "speed or raise sample_spacing_m (up to 1/(4·band_high_cycles_per_m) = {:g} m)",
+        duration_s, speed_m_per_s, length_m, samples, sample_spacing_m, kMaxRoadSamples,
+        0.25 / band.high_cycles_per_m));
+  }
+  // UniformSpline needs 5 samples: 4 spacings of road.
+  if (!(length_m >= 4.0 * sample_spacing_m)) {
+    throw InputError(fmt::format(
+        "keys 'speed_m_per_s' and 'duration_s': {:g} m/s for {:g} s is {:g} m of road, shorter "
+        "than 4·sample_spacing_m = {:g} m (a profile needs at least 5 samples); raise the speed "
+        "or duration_s to at least {:g} s",
+        speed_m_per_s, duration_s, length_m, 4.0 * sample_spacing_m,
+        4.0 * sample_spacing_m / speed_m_per_s));
+  }
+  if (!(fade_in_m <= length_m)) {
+    throw InputError(fmt::format(
+        "key 'fade_in_m' is {:g} m, longer than the road (speed_m_per_s·duration_s = {:g} m); "
+        "expected 0 <= fade_in_m <= {:g}",
+        fade_in_m, length_m, length_m));
+  }
+  check_fft_size(band, sample_spacing_m);
 }
 
 SpatialProfileRoad make_random_road(const std::function<double(double)>& psd_m3,
@@ -100,6 +146,15 @@ SpatialProfileRoad make_random_road(const std::function<double(double)>& psd_m3,
   RandomProfile profile = random_profile(psd_m3, parameters.band, length_m,
                                          parameters.sample_spacing_m, parameters.seed);
   std::vector<double>& h = profile.elevation_m;
+  // validate() bounds the sizes; a spectrum that overflows (a PSD near 1e308) is caught here.
+  for (std::size_t k = 0; k < h.size(); ++k) {
+    if (!std::isfinite(h[k])) {
+      throw InputError(fmt::format(
+          "the random profile's elevation is {} at {:g} m: its spectrum is too large (check the "
+          "roughness and the band)",
+          h[k], static_cast<double>(k) * profile.spacing_m));
+    }
+  }
   double start_slope = std::numeric_limits<double>::quiet_NaN();
   if (parameters.fade_in_m > 0.0) {
     for (std::size_t k = 0; k < h.size(); ++k) {

@@ -54,7 +54,10 @@ struct RandomRoadParameters {
   // behind the profile (offset_m < 0) sees a smooth entry too. 0 disables it.
   double fade_in_m = 5.0;
 
-  // Throws InputError naming the field (as a YAML key) of the first invalid value.
+  // Throws InputError naming the field (as a YAML key) of the first invalid value. Besides
+  // signs and the spacing rule: speed <= 150 m/s, duration >= 1 ms, at least 5 and at most
+  // 2e7 samples over speed·duration, fade_in_m no longer than the road, and an FFT of at most
+  // 2e7 points for the band's lowest octave (road_limits.h).
   void validate() const;
 };
 

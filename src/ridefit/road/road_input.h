@@ -16,6 +16,11 @@ class RoadInput {
   virtual RoadSample at(double time_s) const = 0;
   // The length of the excitation; simulations run from 0 to this time by default.
   virtual double duration_s() const = 0;
+  // The longest step an adaptive integrator may take without stepping over a feature of
+  // this road (an adaptive solver on a flat stretch would otherwise leap over a cleat):
+  // the sample interval of a sampled road, a fraction of the shortest period of an
+  // analytic one.
+  virtual double max_step_s() const = 0;
 };
 
 }  // namespace ridefit::road

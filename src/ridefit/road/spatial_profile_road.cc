@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {
 
@@ -16,11 +17,16 @@ SpatialProfileRoad::SpatialProfileRoad(UniformSpline profile, double speed_m_per
       duration_s_(duration_s),
       origin_m_(origin_m),
       offset_m_(offset_m) {
-  if (!(speed_m_per_s > 0.0) || !std::isfinite(speed_m_per_s)) {
-    throw InputError(fmt::format("key 'speed_m_per_s' is {}, expected a value > 0", speed_m_per_s));
-  }
+  check_speed_m_per_s(speed_m_per_s);
   if (!(duration_s > 0.0) || !std::isfinite(duration_s)) {
     throw InputError(fmt::format("key 'duration_s' is {}, expected a value > 0", duration_s));
+  }
+  const double steps = duration_s / max_step_s();
+  if (!(steps <= kMaxRoadSamples)) {
+    throw InputError(fmt::format(
+        "key 'duration_s' is {:g} s: at speed_m_per_s = {:g} over a road sampled every {:g} m "
+        "that is {:.3g} steps of {:g} s, more than {:g}; shorten duration_s or lower the speed",
+        duration_s, speed_m_per_s, profile_.step(), steps, max_step_s(), kMaxRoadSamples));
   }
   if (!std::isfinite(origin_m) || !std::isfinite(offset_m)) {
     throw InputError(fmt::format("key 'offset_m' is {}, expected a finite number", offset_m));

@@ -14,6 +14,10 @@ namespace ridefit::road {
 // wheel a wheelbase L behind the front one uses offset_m = −L and sees the front wheel's
 // input delayed by L/v. The profile is interpolated by UniformSpline (C2 cubic B-spline;
 // outside the profile the road holds its end elevation, flat).
+//
+// The constructor checks the speed (road_limits.h), a duration > 0 and that the run needs at
+// most kMaxRoadSamples steps of max_step_s(); the builders check their own keys first, so
+// these are a last line of defence that names speed_m_per_s or duration_s.
 class SpatialProfileRoad : public RoadInput {
  public:
   SpatialProfileRoad(UniformSpline profile, double speed_m_per_s, double duration_s,
@@ -21,6 +25,8 @@ class SpatialProfileRoad : public RoadInput {
 
   RoadSample at(double time_s) const override;
   double duration_s() const override { return duration_s_; }
+  // The profile's sample interval in time, spacing/speed.
+  double max_step_s() const override { return profile_.step() / speed_m_per_s_; }
 
   double distance_m(double time_s) const { return origin_m_ + offset_m_ + speed_m_per_s_ * time_s; }
   // The same road for a wheel `offset_m` along it (the profile is shared, not copied).

@@ -9,6 +9,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "ridefit/io/input_error.h"
@@ -76,6 +78,22 @@ void error_handler(int /*code*/, const char* /*module*/, const char* function, c
   session->last_error = fmt::format("{}: {}", function, message);
 }
 
+// Why a solver failure happened, in words a user can act on.
+std::string explain(int flag, bool fixed_step) {
+  if (flag == CV_REPTD_RHSFUNC_ERR || flag == CV_UNREC_RHSFUNC_ERR || flag == CV_RHSFUNC_FAIL ||
+      flag == ARK_REPTD_RHSFUNC_ERR || flag == ARK_UNREC_RHSFUNC_ERR || flag == ARK_RHSFUNC_FAIL) {
+    return fixed_step
+               ? "the state became non-finite: the step is beyond RK4's stability limit for this "
+                 "model and road (friction with a large sigma0 is stiff); use a smaller --step "
+                 "or --method cvode"
+               : "the state became non-finite; check the model for extreme parameter values";
+  }
+  if (flag == CV_TOO_MUCH_WORK) {
+    return "too many steps: the solution varies faster than the tolerance can follow";
+  }
+  return "solver failure";
+}
+
 void check(int flag, const char* what) {
   if (flag < 0) throw RunError(fmt::format("SUNDIALS set-up failed in {} (flag {})", what, flag));
 }
@@ -97,6 +115,125 @@ ARKodeButcherTable classic_rk4_table() {
 
 const char* to_string(Method method) { return method == Method::kCvodeBdf ? "cvode" : "rk4"; }
 
+namespace {
+
+// Steps the prepared solver through every output time, copying the states out.
+template <typename Advance>
+void step_through(const std::vector<double>& output_times_s, SundialsSession& session,
+                  const IntegratorOptions& options, Trajectory& trajectory, Advance advance) {
+  const int n = trajectory.state_size;
+  const double* y = N_VGetArrayPointer(session.y);
+  for (std::size_t k = 1; k < output_times_s.size(); ++k) {
+    advance(output_times_s[k]);
+    std::copy(y, y + n, trajectory.states.begin() + static_cast<long>(k) * n);
+    if (options.progress) options.progress(output_times_s[k]);
+  }
+}
+
+void run_cvode(const OdeSystem& system, const std::vector<double>& output_times_s,
+               const IntegratorOptions& options, SundialsSession& session, CallbackData& data,
+               Trajectory& trajectory) {
+  const int n = system.size();
+  if (!(options.relative_tolerance > 0.0 && options.relative_tolerance <= 0.1)) {
+    throw InputError(fmt::format("relative tolerance {}: expected a value in (0, 0.1]",
+                                 options.relative_tolerance));
+  }
+  session.memory = CVodeCreate(CV_BDF, session.context);
+  if (session.memory == nullptr) throw RunError("SUNDIALS: CVodeCreate failed");
+  check(CVodeSetErrHandlerFn(session.memory, error_handler, &session), "CVodeSetErrHandlerFn");
+  check(CVodeInit(session.memory, rhs_callback, output_times_s.front(), session.y), "CVodeInit");
+  double* atol = N_VGetArrayPointer(session.absolute_tolerance);
+  for (int i = 0; i < n; ++i) atol[i] = options.relative_tolerance * system.typical_magnitude(i);
+  check(CVodeSVtolerances(session.memory, options.relative_tolerance, session.absolute_tolerance),
+        "CVodeSVtolerances");
+  check(CVodeSetUserData(session.memory, &data), "CVodeSetUserData");
+  session.matrix = SUNDenseMatrix(n, n, session.context);
+  session.linear_solver = SUNLinSol_Dense(session.y, session.matrix, session.context);
+  check(CVodeSetLinearSolver(session.memory, session.linear_solver, session.matrix),
+        "CVodeSetLinearSolver");
+  check(CVodeSetJacFn(session.memory, jacobian_callback), "CVodeSetJacFn");
+  // CVODE applies the step limit between two output times.
+  const double interval_s =
+      (output_times_s.back() - output_times_s.front()) /
+      static_cast<double>(std::max<std::size_t>(1, output_times_s.size() - 1));
+  const long max_steps =
+      std::max(1000L, static_cast<long>(std::ceil(options.max_steps_per_s * interval_s)));
+  check(CVodeSetMaxNumSteps(session.memory, max_steps), "CVodeSetMaxNumSteps");
+  double max_step = options.max_step_s;
+  if (system.max_step_s() > 0.0 && (max_step <= 0.0 || system.max_step_s() < max_step)) {
+    max_step = system.max_step_s();
+  }
+  if (max_step > 0.0) check(CVodeSetMaxStep(session.memory, max_step), "CVodeSetMaxStep");
+  check(CVodeSetStopTime(session.memory, output_times_s.back()), "CVodeSetStopTime");
+
+  step_through(output_times_s, session, options, trajectory, [&](double t_out) {
+    double t_reached = 0.0;
+    const int flag = CVode(session.memory, t_out, session.y, &t_reached, CV_NORMAL);
+    if (flag < 0) {
+      double t_last = t_reached;
+      CVodeGetCurrentTime(session.memory, &t_last);
+      throw RunError(fmt::format("CVODE failed at t = {:.6g} s: {}: {} ({})", t_last,
+                                 CVodeGetReturnFlagName(flag), explain(flag, false),
+                                 session.last_error));
+    }
+  });
+  auto& stats = trajectory.statistics;
+  CVodeGetNumSteps(session.memory, &stats.steps);
+  CVodeGetNumRhsEvals(session.memory, &stats.rhs_evaluations);
+  CVodeGetNumJacEvals(session.memory, &stats.jacobian_evaluations);
+  CVodeGetNumErrTestFails(session.memory, &stats.error_test_failures);
+  CVodeGetNumNonlinSolvConvFails(session.memory, &stats.nonlinear_convergence_failures);
+}
+
+void run_rk4(const std::vector<double>& output_times_s, const IntegratorOptions& options,
+             SundialsSession& session, CallbackData& data, Trajectory& trajectory) {
+  const double h = options.fixed_step_s;
+  const double span_s = output_times_s.back() - output_times_s.front();
+  const double interval_s =
+      span_s / static_cast<double>(std::max<std::size_t>(1, output_times_s.size() - 1));
+  if (!(h > 0.0) || !std::isfinite(h)) {
+    throw InputError(fmt::format("RK4 step {} s: expected a finite step > 0", h));
+  }
+  if (h > interval_s * (1.0 + 1e-9)) {
+    throw InputError(fmt::format(
+        "RK4 step {} s is longer than the output interval {} s; use a step of at most {} s or a "
+        "lower output rate",
+        h, interval_s, interval_s));
+  }
+  if (span_s / h > kMaxFixedSteps) {
+    throw InputError(fmt::format(
+        "RK4 step {} s over {} s would take {:.3g} steps (at most {:g}); use a larger step or "
+        "--method cvode",
+        h, span_s, span_s / h, kMaxFixedSteps));
+  }
+  session.arkode = true;
+  session.memory = ERKStepCreate(rhs_callback, output_times_s.front(), session.y, session.context);
+  if (session.memory == nullptr) throw RunError("SUNDIALS: ERKStepCreate failed");
+  check(ERKStepSetErrHandlerFn(session.memory, error_handler, &session), "ERKStepSetErrHandlerFn");
+  session.table = classic_rk4_table();
+  check(ERKStepSetTable(session.memory, session.table), "ERKStepSetTable");
+  check(ERKStepSetUserData(session.memory, &data), "ERKStepSetUserData");
+  check(ERKStepSetFixedStep(session.memory, h), "ERKStepSetFixedStep");
+  check(ERKStepSetMaxNumSteps(session.memory, static_cast<long>(std::ceil(interval_s / h)) + 10),
+        "ERKStepSetMaxNumSteps");
+  check(ERKStepSetStopTime(session.memory, output_times_s.back()), "ERKStepSetStopTime");
+
+  step_through(output_times_s, session, options, trajectory, [&](double t_out) {
+    double t_reached = 0.0;
+    const int flag = ERKStepEvolve(session.memory, t_out, session.y, &t_reached, ARK_NORMAL);
+    if (flag < 0) {
+      double t_last = t_reached;
+      ERKStepGetCurrentTime(session.memory, &t_last);
+      throw RunError(fmt::format("ARKODE RK4 failed at t = {:.6g} s: {}: {}", t_last,
+                                 ERKStepGetReturnFlagName(flag), explain(flag, true)));
+    }
+  });
+  ERKStepGetNumSteps(session.memory, &trajectory.statistics.steps);
+  ERKStepGetNumRhsEvals(session.memory, &trajectory.statistics.rhs_evaluations);
+}
+
+}  // namespace
+
 Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
                      const std::vector<double>& output_times_s, const IntegratorOptions& options) {
   const int n = system.size();
@@ -114,8 +251,7 @@ Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
   SundialsSession session(n);
   CallbackData data{&system, &session};
   double* y = N_VGetArrayPointer(session.y);
-  for (int i = 0; i < n; ++i) y[i] = x0[static_cast<std::size_t>(i)];
-  const double t0 = output_times_s.front();
+  std::copy(x0.begin(), x0.end(), y);
 
   Trajectory trajectory;
   trajectory.state_size = n;
@@ -123,80 +259,12 @@ Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
   trajectory.time_s = output_times_s;
   trajectory.states.resize(output_times_s.size() * static_cast<std::size_t>(n));
   std::copy(y, y + n, trajectory.states.begin());
+  if (output_times_s.size() == 1) return trajectory;
 
   if (options.method == Method::kCvodeBdf) {
-    if (!(options.relative_tolerance > 0.0)) throw InputError("relative tolerance must be > 0");
-    session.memory = CVodeCreate(CV_BDF, session.context);
-    if (session.memory == nullptr) throw RunError("SUNDIALS: CVodeCreate failed");
-    check(CVodeSetErrHandlerFn(session.memory, error_handler, &session), "CVodeSetErrHandlerFn");
-    check(CVodeInit(session.memory, rhs_callback, t0, session.y), "CVodeInit");
-    double* atol = N_VGetArrayPointer(session.absolute_tolerance);
-    for (int i = 0; i < n; ++i) atol[i] = options.relative_tolerance * system.typical_magnitude(i);
-    check(CVodeSVtolerances(session.memory, options.relative_tolerance, session.absolute_tolerance),
-          "CVodeSVtolerances");
-    check(CVodeSetUserData(session.memory, &data), "CVodeSetUserData");
-    session.matrix = SUNDenseMatrix(n, n, session.context);
-    session.linear_solver = SUNLinSol_Dense(session.y, session.matrix, session.context);
-    check(CVodeSetLinearSolver(session.memory, session.linear_solver, session.matrix),
-          "CVodeSetLinearSolver");
-    check(CVodeSetJacFn(session.memory, jacobian_callback), "CVodeSetJacFn");
-    check(CVodeSetMaxNumSteps(session.memory, options.max_steps), "CVodeSetMaxNumSteps");
-    if (options.max_step_s > 0.0)
-      check(CVodeSetMaxStep(session.memory, options.max_step_s), "CVodeSetMaxStep");
-    const double t_end = output_times_s.back();
-    check(CVodeSetStopTime(session.memory, t_end), "CVodeSetStopTime");
-    for (std::size_t k = 1; k < output_times_s.size(); ++k) {
-      double t_reached = 0.0;
-      const int flag = CVode(session.memory, output_times_s[k], session.y, &t_reached, CV_NORMAL);
-      if (flag < 0) {
-        double t_last = t_reached;
-        CVodeGetCurrentTime(session.memory, &t_last);
-        throw RunError(fmt::format("CVODE failed at t = {:.6g} s: {} ({})", t_last,
-                                   CVodeGetReturnFlagName(flag), session.last_error));
-      }
-      std::copy(y, y + n, trajectory.states.begin() + static_cast<long>(k) * n);
-    }
-    long value = 0;
-    CVodeGetNumSteps(session.memory, &value);
-    trajectory.statistics.steps = value;
-    CVodeGetNumRhsEvals(session.memory, &value);
-    trajectory.statistics.rhs_evaluations = value;
-    CVodeGetNumJacEvals(session.memory, &value);
-    trajectory.statistics.jacobian_evaluations = value;
-    CVodeGetNumErrTestFails(session.memory, &value);
-    trajectory.statistics.error_test_failures = value;
-    CVodeGetNumNonlinSolvConvFails(session.memory, &value);
-    trajectory.statistics.nonlinear_convergence_failures = value;
+    run_cvode(system, output_times_s, options, session, data, trajectory);
   } else {
-    if (!(options.fixed_step_s > 0.0)) throw InputError("fixed step must be > 0");
-    session.arkode = true;
-    session.memory = ERKStepCreate(rhs_callback, t0, session.y, session.context);
-    if (session.memory == nullptr) throw RunError("SUNDIALS: ERKStepCreate failed");
-    check(ERKStepSetErrHandlerFn(session.memory, error_handler, &session),
-          "ERKStepSetErrHandlerFn");
-    session.table = classic_rk4_table();
-    check(ERKStepSetTable(session.memory, session.table), "ERKStepSetTable");
-    check(ERKStepSetUserData(session.memory, &data), "ERKStepSetUserData");
-    check(ERKStepSetFixedStep(session.memory, options.fixed_step_s), "ERKStepSetFixedStep");
-    check(ERKStepSetMaxNumSteps(session.memory, options.max_steps), "ERKStepSetMaxNumSteps");
-    check(ERKStepSetStopTime(session.memory, output_times_s.back()), "ERKStepSetStopTime");
-    for (std::size_t k = 1; k < output_times_s.size(); ++k) {
-      double t_reached = 0.0;
-      const int flag =
-          ERKStepEvolve(session.memory, output_times_s[k], session.y, &t_reached, ARK_NORMAL);
-      if (flag < 0) {
-        double t_last = t_reached;
-        ERKStepGetCurrentTime(session.memory, &t_last);
-        throw RunError(fmt::format("ARKODE RK4 failed at t = {:.6g} s: {} ({})", t_last,
-                                   ERKStepGetReturnFlagName(flag), session.last_error));
-      }
-      std::copy(y, y + n, trajectory.states.begin() + static_cast<long>(k) * n);
-    }
-    long value = 0;
-    ERKStepGetNumSteps(session.memory, &value);
-    trajectory.statistics.steps = value;
-    ERKStepGetNumRhsEvals(session.memory, &value);
-    trajectory.statistics.rhs_evaluations = value;
+    run_rk4(output_times_s, options, session, data, trajectory);
   }
   return trajectory;
 }

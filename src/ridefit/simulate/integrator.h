@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,14 @@ enum class Method {
 struct IntegratorOptions {
   Method method = Method::kCvodeBdf;
   double relative_tolerance = 1e-6;  // CVODE
-  double max_step_s = 0.0;           // CVODE; 0 = unlimited
+  double max_step_s = 0.0;           // CVODE; 0 = only the system's own limit
   double fixed_step_s = 1e-4;        // RK4
-  long max_steps = 50'000'000;
+  // CVODE gives up (a RunError) after this many steps per simulated second, so a run whose
+  // steps collapse fails with a message instead of running for hours. The Passat corner on
+  // class A road at rtol 1e-6 needs about 4 000.
+  double max_steps_per_s = 200'000;
+  // Called after each output sample with its time (may be empty).
+  std::function<void(double time_s)> progress;
 };
 
 struct SolverStatistics {
@@ -39,7 +45,10 @@ struct Trajectory {
 };
 
 // Integrates from x0 at output_times_s.front() through every output time (increasing).
-// Throws RunError, naming the time and the solver's reason, when the solver fails.
+// Throws RunError, naming the time and the solver's reason, when the solver fails, and
+// InputError for settings that cannot work (a fixed step longer than the output interval,
+// or one that would take more than kMaxFixedSteps steps).
+constexpr double kMaxFixedSteps = 1e9;
 Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
                      const std::vector<double>& output_times_s, const IntegratorOptions& options);
 

@@ -17,6 +17,8 @@ class OdeSystem {
   // A typical magnitude per state: absolute tolerance = relative tolerance × magnitude, so
   // positions in metres and forces in newtons are each judged on their own scale.
   virtual double typical_magnitude(int state_index) const = 0;
+  // The longest step an adaptive solver may take (an input's feature size); 0 = no limit.
+  virtual double max_step_s() const = 0;
 };
 
 }  // namespace ridefit::simulate

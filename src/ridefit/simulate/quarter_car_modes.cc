@@ -13,6 +13,7 @@ class FlatRoad : public road::RoadInput {
  public:
   road::RoadSample at(double) const override { return {}; }
   double duration_s() const override { return 0.0; }
+  double max_step_s() const override { return 0.0; }
 };
 
 }  // namespace

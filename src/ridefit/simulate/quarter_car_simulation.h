@@ -29,9 +29,14 @@ struct SimulationOptions {
   IntegratorOptions integrator;
 };
 
+// Ten channels of 8 bytes each: 2e7 samples keep a run under 2 GB.
+constexpr double kMaxOutputSamples = 2e7;
+
 // Runs the car from static equilibrium at rest over the road and samples every channel at
 // output_rate_Hz (the integrator's dense output gives the states there; accelerations
-// come from the model at those states). Throws RunError on solver failure.
+// come from the model at those states). Throws RunError on solver failure and InputError
+// for a rate or duration that cannot work (non-finite, longer than the road, or more than
+// kMaxOutputSamples samples).
 QuarterCarResponse simulate(const model::QuarterCar& car, const road::RoadInput& road,
                             const SimulationOptions& options);
 

@@ -18,6 +18,7 @@ class QuarterCarSystem : public OdeSystem {
   bool derivatives(double t_s, const double* x, double* xdot) const override;
   bool jacobian(double t_s, const double* x, double* jacobian_column_major) const override;
   double typical_magnitude(int state_index) const override;
+  double max_step_s() const override { return road_.max_step_s(); }
 
  private:
   const model::QuarterCar& car_;
