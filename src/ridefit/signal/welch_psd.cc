@@ -81,29 +81,6 @@ void validate(std::span<const double> signal, double sample_rate_Hz, const Welch
   }
 }
 
-void detrend_in_place(std::vector<double>& segment, Detrend detrend) {
-  if (detrend == Detrend::kNone) return;
-  const double n = static_cast<double>(segment.size());
-  double sum = 0.0;
-  for (double x : segment) sum += x;
-  const double mean = sum / n;
-  if (detrend == Detrend::kMean) {
-    for (double& x : segment) x -= mean;
-    return;
-  }
-  // Least-squares line about the centred abscissa t = i − (n−1)/2, so that the intercept is
-  // the mean and the slope decouples: slope = Σ t·x / Σ t², Σ t² = n(n²−1)/12.
-  const double centre = 0.5 * (n - 1.0);
-  double sum_tx = 0.0;
-  for (std::size_t i = 0; i < segment.size(); ++i) {
-    sum_tx += (static_cast<double>(i) - centre) * segment[i];
-  }
-  const double slope = sum_tx / (n * (n * n - 1.0) / 12.0);
-  for (std::size_t i = 0; i < segment.size(); ++i) {
-    segment[i] -= mean + slope * (static_cast<double>(i) - centre);
-  }
-}
-
 }  // namespace
 
 PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rate_Hz,
@@ -161,25 +138,6 @@ PowerSpectralDensity welch_psd(const Eigen::Ref<const Eigen::VectorXd>& signal,
                                double sample_rate_Hz, const WelchOptions& options) {
   return welch_psd(std::span<const double>(signal.data(), static_cast<std::size_t>(signal.size())),
                    sample_rate_Hz, options);
-}
-
-const char* to_string(Detrend detrend) {
-  switch (detrend) {
-    case Detrend::kNone:
-      return "none";
-    case Detrend::kMean:
-      return "mean";
-    case Detrend::kLinear:
-      return "linear";
-  }
-  return "unknown";
-}
-
-Detrend parse_detrend(std::string_view name) {
-  if (name == "none") return Detrend::kNone;
-  if (name == "mean") return Detrend::kMean;
-  if (name == "linear") return Detrend::kLinear;
-  throw InputError(fmt::format("unknown detrend '{}'; use one of: none, mean, linear", name));
 }
 
 }  // namespace ridefit::signal

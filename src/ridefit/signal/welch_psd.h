@@ -4,17 +4,11 @@
 
 #include <cstddef>
 #include <span>
-#include <string_view>
 #include <vector>
 
-namespace ridefit::signal {
+#include "ridefit/signal/detrend.h"
 
-// Detrending applied to every segment before windowing.
-enum class Detrend {
-  kNone,
-  kMean,    // removes the segment's mean (DC would otherwise leak into the low bins)
-  kLinear,  // removes the segment's least-squares straight line (drift, integrated signals)
-};
+namespace ridefit::signal {
 
 // Segment length: give at most one of segment_length_samples and segment_length_s (seconds
 // are rounded to the nearest sample). With neither, the signal is split into 8 segments at the
@@ -27,7 +21,7 @@ struct WelchOptions {
   std::size_t segment_length_samples = 0;  // 0 = not given
   double segment_length_s = 0.0;           // 0 = not given
   double overlap_fraction = 0.5;           // in [0, 1); overlap = floor(overlap_fraction·L)
-  Detrend detrend = Detrend::kMean;
+  Detrend detrend = Detrend::kMean;        // applied to every segment before windowing
 };
 
 // One-sided power spectral density estimate.
@@ -59,10 +53,5 @@ PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rat
                                const WelchOptions& options = {});
 PowerSpectralDensity welch_psd(const Eigen::Ref<const Eigen::VectorXd>& signal,
                                double sample_rate_Hz, const WelchOptions& options = {});
-
-// "none" | "mean" | "linear".
-const char* to_string(Detrend detrend);
-// Inverse of to_string; throws InputError naming the accepted words.
-Detrend parse_detrend(std::string_view name);
 
 }  // namespace ridefit::signal
