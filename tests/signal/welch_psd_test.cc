@@ -12,6 +12,7 @@
 #include "ridefit/io/input_error.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/spectrum_peak.h"
+#include "support/white_noise.h"
 
 namespace ridefit::signal {
 namespace {
@@ -75,39 +76,87 @@ TEST(WelchPsd, PeakInterpolationAcrossBinOffsets) {
   }
 }
 
-TEST(WelchPsd, WhiteNoiseLevelAndParseval) {
+TEST(WelchPsd, WhiteNoiseLevelScatterAndParseval) {
   const double fs = 200.0, sigma = 0.3;
   const std::size_t n = 1u << 20, length = 1024;
   std::mt19937_64 rng(20240611);
-  std::normal_distribution<double> normal(0.0, sigma);
-  std::vector<double> x(n);
-  for (double& v : x) v = normal(rng);
+  const std::vector<double> x = testing::white_noise(n, sigma, rng);
 
-  const auto s = welch_psd(x, fs, {.segment_length_samples = length});
-  const double k = static_cast<double>(s.segment_count);
-  EXPECT_EQ(s.segment_count, 2047u);
+  // The scatter over bins checks the equivalent degrees of freedom at several overlaps
+  // (50 % and 75 % lean on the numerically summed window correlation).
+  for (double overlap : {0.0, 0.5, 0.75}) {
+    const auto s =
+        welch_psd(x, fs, {.segment_length_samples = length, .overlap_fraction = overlap});
+    const double nu = s.degrees_of_freedom[1];
 
-  // Interior bins (DC is removed by the mean detrend, Nyquist is not doubled).
-  double sum = 0.0, sum_sq = 0.0;
-  const std::size_t first = 1, last = s.psd.size() - 2;
-  const double bins = static_cast<double>(last - first + 1);
-  for (std::size_t i = first; i <= last; ++i) {
-    sum += s.psd[i];
-    sum_sq += s.psd[i] * s.psd[i];
+    // Interior bins (DC is removed by the mean detrend, Nyquist is not doubled).
+    double sum = 0.0, sum_sq = 0.0;
+    const std::size_t first = 1, last = s.psd.size() - 2;
+    const double bins = static_cast<double>(last - first + 1);
+    for (std::size_t i = first; i <= last; ++i) {
+      sum += s.psd[i];
+      sum_sq += s.psd[i] * s.psd[i];
+    }
+    const double mean = sum / bins;
+    const double level = 2.0 * sigma * sigma / fs;
+    // ν·P/level ~ χ²_ν: relative standard deviation sqrt(2/ν) per bin.
+    const double bin_relative_sd = std::sqrt(2.0 / nu);
+    // Adjacent Hann bins are correlated; count the mean as over bins/2 independent values and
+    // allow 4 standard deviations.
+    EXPECT_NEAR(mean / level, 1.0, 4.0 * bin_relative_sd / std::sqrt(bins / 2.0)) << overlap;
+    // The scatter's own relative error is about sqrt(1/bins) ≈ 3 %; 10 % is over 3 of those
+    // and well under the gap to the naive 2K at 75 % overlap (ν ≈ 1.04·K: sd 39 % larger).
+    const double scatter = std::sqrt(sum_sq / bins - mean * mean) / mean;
+    EXPECT_NEAR(scatter / bin_relative_sd, 1.0, 0.10) << overlap;
+
+    EXPECT_NEAR(band_power(s, 0.0, fs / 2.0), sigma * sigma, 0.01 * sigma * sigma) << overlap;
+    EXPECT_NEAR(total_power(s), sigma * sigma, 0.01 * sigma * sigma) << overlap;
   }
-  const double mean = sum / bins;
-  const double level = 2.0 * sigma * sigma / fs;
-  // Each bin's relative standard deviation is sqrt((1 + 2ρ²)/K) for Hann at 50 % overlap
-  // (ρ ≈ 0.167, the window's overlap correlation).
-  const double bin_relative_sd = std::sqrt((1.0 + 2.0 * 0.167 * 0.167) / k);
-  // Adjacent Hann bins are correlated; count the mean as over bins/2 independent values and
-  // allow 4 standard deviations.
-  EXPECT_NEAR(mean / level, 1.0, 4.0 * bin_relative_sd / std::sqrt(bins / 2.0));
-  const double scatter = std::sqrt(sum_sq / bins - mean * mean) / mean;
-  EXPECT_NEAR(scatter / bin_relative_sd, 1.0, 0.15);
+}
 
-  EXPECT_NEAR(band_power(s, 0.0, fs / 2.0), sigma * sigma, 0.01 * sigma * sigma);
-  EXPECT_NEAR(total_power(s), sigma * sigma, 0.01 * sigma * sigma);
+TEST(WelchPsd, CarriesDegreesOfFreedomAndHop) {
+  std::mt19937_64 rng(5);
+  const auto x = testing::white_noise(5000, 1.0, rng);
+  const auto plain = welch_psd(x, 100.0, {.segment_length_samples = 500, .overlap_fraction = 0.0});
+  EXPECT_EQ(plain.hop_samples, 500u);
+  EXPECT_EQ(plain.smoothing_bins, 1u);
+  ASSERT_EQ(plain.degrees_of_freedom.size(), plain.psd.size());
+  EXPECT_DOUBLE_EQ(plain.degrees_of_freedom[1], 20.0);      // 2 per independent segment
+  EXPECT_DOUBLE_EQ(plain.degrees_of_freedom[0], 10.0);      // DC: real, one per segment
+  EXPECT_DOUBLE_EQ(plain.degrees_of_freedom.back(), 10.0);  // Nyquist (even L)
+
+  const auto half = welch_psd(x, 100.0, {.segment_length_samples = 500});
+  EXPECT_EQ(half.hop_samples, 250u);
+  EXPECT_EQ(half.segment_count, 19u);
+  EXPECT_NEAR(half.degrees_of_freedom[7], 38.0 / (1.0 + 2.0 * (18.0 / 19.0) / 36.0), 1e-10);
+
+  const auto odd = welch_psd(x, 100.0, {.segment_length_samples = 499, .overlap_fraction = 0.0});
+  EXPECT_DOUBLE_EQ(odd.degrees_of_freedom.back(), 20.0);  // odd L: no Nyquist bin
+}
+
+// The one-sided factor c_k: 1 at DC and Nyquist, 2 elsewhere. A constant c (no detrend) puts
+// |Σw|² = (cL/2)² into DC and (cL/4)² into bins ±1; scaled by fs·Σw² = fs·3L/8 that is
+// P[0]·Δf = 2c²/3 and P[1]·Δf = 2·c²/6 = c²/3, summing to c². The alternating sequence c·(−1)^n
+// mirrors it at Nyquist.
+TEST(WelchPsd, OneSidedScalingAtDcAndNyquist) {
+  const double c = 1.7, fs = 64.0;
+  const std::size_t length = 128;
+  const WelchOptions options{
+      .segment_length_samples = length, .overlap_fraction = 0.0, .detrend = Detrend::kNone};
+  const auto dc = welch_psd(std::vector<double>(4 * length, c), fs, options);
+  const double df = dc.frequency_resolution_Hz;
+  EXPECT_NEAR(dc.psd[0] * df, 2.0 * c * c / 3.0, 1e-12);
+  EXPECT_NEAR(dc.psd[1] * df, c * c / 3.0, 1e-12);
+  EXPECT_NEAR(dc.psd[2] * df, 0.0, 1e-12);
+
+  std::vector<double> alternating(4 * length);
+  for (std::size_t i = 0; i < alternating.size(); ++i) alternating[i] = i % 2 == 0 ? c : -c;
+  const auto ny = welch_psd(alternating, fs, options);
+  const std::size_t last = ny.psd.size() - 1;
+  EXPECT_DOUBLE_EQ(ny.frequency_Hz[last], fs / 2.0);
+  EXPECT_NEAR(ny.psd[last] * df, 2.0 * c * c / 3.0, 1e-12);
+  EXPECT_NEAR(ny.psd[last - 1] * df, c * c / 3.0, 1e-12);
+  EXPECT_NEAR(ny.psd[0] * df, 0.0, 1e-12);
 }
 
 // One segment, no detrend, no overlap: Σ P·Δf equals Σ(w·x)²/Σw² to rounding, for even L

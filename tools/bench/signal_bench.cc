@@ -39,6 +39,20 @@ void BM_WelchPsd_60s_1kHz_10sSegments(benchmark::State& state) {
 }
 BENCHMARK(BM_WelchPsd_60s_1kHz_10sSegments)->Unit(benchmark::kMillisecond);
 
+// 10^6 samples (1000 s at 1 kHz), 4096-sample segments, 50 % overlap: 487 segments.
+void BM_WelchPsd_1e6Samples_4096Segments(benchmark::State& state) {
+  const double fs = 1000.0;
+  const std::vector<double> x = test_signal(1000.0, fs);
+  const ridefit::signal::WelchOptions options{.segment_length_samples = 4096,
+                                              .overlap_fraction = 0.5};
+  for (auto _ : state) {
+    auto psd = ridefit::signal::welch_psd(x, fs, options);
+    benchmark::DoNotOptimize(psd.psd.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<long>(x.size()));
+}
+BENCHMARK(BM_WelchPsd_1e6Samples_4096Segments)->Unit(benchmark::kMillisecond);
+
 // Peak search plus band power on the resulting 5001-bin spectrum.
 void BM_PeakAndBandPower_5001Bins(benchmark::State& state) {
   const double fs = 1000.0;

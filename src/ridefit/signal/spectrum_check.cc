@@ -47,4 +47,37 @@ void check_spectrum_band(std::string_view caller, std::span<const double> freque
   }
 }
 
+void check_psd_statistics(std::string_view caller, std::string_view name,
+                          const PowerSpectralDensity& spectrum) {
+  const std::size_t n = spectrum.psd.size();
+  if (n < 2 || spectrum.frequency_Hz.size() != n || spectrum.degrees_of_freedom.size() != n) {
+    throw InputError(fmt::format(
+        "{}: {} has {} frequencies, {} PSD values and {} degrees of freedom; they must pair up, "
+        "with at least 2 bins (use welch_psd to make a spectrum)",
+        caller, name, spectrum.frequency_Hz.size(), n, spectrum.degrees_of_freedom.size()));
+  }
+  if (!std::isfinite(spectrum.sample_rate_Hz) || !(spectrum.sample_rate_Hz > 0.0)) {
+    throw InputError(fmt::format("{}: {} has sample rate {} Hz; it must be positive and finite",
+                                 caller, name, spectrum.sample_rate_Hz));
+  }
+  if (spectrum.segment_length_samples == 0 || spectrum.segment_count == 0 ||
+      spectrum.hop_samples == 0 || spectrum.smoothing_bins == 0) {
+    throw InputError(fmt::format(
+        "{}: {} has segment length {}, segment count {}, hop {} and smoothing width {}; each "
+        "must be at least 1",
+        caller, name, spectrum.segment_length_samples, spectrum.segment_count, spectrum.hop_samples,
+        spectrum.smoothing_bins));
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const double p = spectrum.psd[k];
+    const double dof = spectrum.degrees_of_freedom[k];
+    if (!std::isfinite(p) || p < 0.0 || !std::isfinite(dof) || !(dof > 0.0)) {
+      throw InputError(fmt::format(
+          "{}: {} bin {} ({} Hz) has PSD {} and {} degrees of freedom; the PSD must be finite "
+          "and ≥ 0, the degrees of freedom finite and > 0",
+          caller, name, k, spectrum.frequency_Hz[k], p, dof));
+    }
+  }
+}
+
 }  // namespace ridefit::signal

@@ -6,9 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <numbers>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/signal/equivalent_dof.h"
+#include "ridefit/signal/hann_window.h"
 
 namespace ridefit::signal {
 namespace {
@@ -93,15 +94,9 @@ PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rat
   const std::size_t segment_count = (signal.size() - length) / hop + 1;
   const std::size_t bin_count = length / 2 + 1;
 
-  // Periodic Hann: the (L+1)-point symmetric window without its last sample, so that
-  // overlapping segments at 50 % sum to a constant.
-  std::vector<double> window(length);
+  const std::vector<double> window = periodic_hann_window(length);
   double window_power = 0.0;
-  for (std::size_t i = 0; i < length; ++i) {
-    window[i] = 0.5 - 0.5 * std::cos(2.0 * std::numbers::pi * static_cast<double>(i) /
-                                     static_cast<double>(length));
-    window_power += window[i] * window[i];
-  }
+  for (double w : window) window_power += w * w;
 
   Eigen::FFT<double> fft;
   fft.SetFlag(Eigen::FFT<double>::HalfSpectrum);
@@ -121,15 +116,20 @@ PowerSpectralDensity welch_psd(std::span<const double> signal, double sample_rat
   result.sample_rate_Hz = sample_rate_Hz;
   result.segment_length_samples = length;
   result.segment_count = segment_count;
+  result.hop_samples = hop;
   result.frequency_resolution_Hz = sample_rate_Hz / static_cast<double>(length);
   result.frequency_Hz.resize(bin_count);
   result.psd.resize(bin_count);
   const double scale = 1.0 / (sample_rate_Hz * window_power * static_cast<double>(segment_count));
+  const double dof = welch_degrees_of_freedom(window, hop, segment_count);
+  result.degrees_of_freedom.resize(bin_count);
   const bool has_nyquist_bin = length % 2 == 0;
   for (std::size_t k = 0; k < bin_count; ++k) {
+    // DC and Nyquist are real for real input: one squared normal per segment instead of two.
     const bool single = k == 0 || (has_nyquist_bin && k == bin_count - 1);
     result.frequency_Hz[k] = static_cast<double>(k) * result.frequency_resolution_Hz;
     result.psd[k] = (single ? 1.0 : 2.0) * scale * sum_power[k];
+    result.degrees_of_freedom[k] = single ? 0.5 * dof : dof;
   }
   return result;
 }

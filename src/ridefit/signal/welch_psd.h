@@ -25,13 +25,22 @@ struct WelchOptions {
 };
 
 // One-sided power spectral density estimate.
+//
+// degrees_of_freedom[k] is the equivalent number of degrees of freedom ν of psd[k]: ν·psd/PSD
+// is approximately χ²_ν-distributed (see equivalent_dof.h, psd_confidence.h). It assumes the
+// true spectrum is locally flat; DC and Nyquist carry half the interior value, and the lowest
+// bins, which detrending alters, are not described by it. Averaging (psd_average.h) adds the
+// degrees of freedom, smoothing (psd_smoothing.h) raises them.
 struct PowerSpectralDensity {
   std::vector<double> frequency_Hz;  // k·fs/L, k = 0 … floor(L/2)
   std::vector<double> psd;           // [signal unit]²/Hz
   double sample_rate_Hz = 0.0;
   double frequency_resolution_Hz = 0.0;  // fs/L
   std::size_t segment_length_samples = 0;
-  std::size_t segment_count = 0;  // kept for confidence bands (equivalent degrees of freedom)
+  std::size_t segment_count = 0;           // segments averaged (summed over averaged records)
+  std::size_t hop_samples = 0;             // L − overlap: the distance between segment starts
+  std::vector<double> degrees_of_freedom;  // per bin, as psd
+  std::size_t smoothing_bins = 1;          // moving-average width applied (1 = unsmoothed)
 };
 
 // Welch's averaged, modified periodogram of a uniformly sampled signal.
@@ -44,7 +53,8 @@ struct PowerSpectralDensity {
 //
 // with c_k = 2 for all bins but DC and (for even L) Nyquist, c_k = 1 there: the one-sided
 // density. Scaling by fs·Σw² makes Σ_k P[k]·Δf equal the mean of Σ(w·x)²/Σw² over segments,
-// i.e. ∫PSD df equals the (detrended) signal's variance (Parseval).
+// i.e. ∫PSD df equals the (detrended) signal's variance (Parseval). The degrees of freedom are
+// welch_degrees_of_freedom(window, hop, K), halved at DC and Nyquist.
 //
 // Throws InputError for a signal under 2 samples, a non-finite sample, sample_rate_Hz ≤ 0 or
 // non-finite, overlap outside [0, 1), both or invalid segment lengths, a segment shorter
