@@ -2,34 +2,21 @@
 //   signal_bench --benchmark_repetitions=10 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-#include <numbers>
-#include <random>
 #include <vector>
 
+#include "bench_signals.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/spectrum_peak.h"
 #include "ridefit/signal/welch_psd.h"
 
 namespace {
 
-// A body-acceleration-like record: a 1.2 Hz sine on seeded white noise.
-std::vector<double> test_signal(double duration_s, double sample_rate_Hz) {
-  const auto n = static_cast<std::size_t>(duration_s * sample_rate_Hz);
-  std::mt19937_64 rng(42);
-  std::normal_distribution<double> noise(0.0, 0.5);
-  std::vector<double> x(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) / sample_rate_Hz;
-    x[i] = std::sin(2.0 * std::numbers::pi * 1.2 * t) + noise(rng);
-  }
-  return x;
-}
+using ridefit::bench::sine_on_noise;
 
 // 60 s at 1 kHz, 10 s segments, 50 % overlap: 11 segments of 10 000 samples.
 void BM_WelchPsd_60s_1kHz_10sSegments(benchmark::State& state) {
   const double fs = 1000.0;
-  const std::vector<double> x = test_signal(60.0, fs);
+  const std::vector<double> x = sine_on_noise(60.0, fs);
   const ridefit::signal::WelchOptions options{.segment_length_s = 10.0, .overlap_fraction = 0.5};
   for (auto _ : state) {
     auto psd = ridefit::signal::welch_psd(x, fs, options);
@@ -57,7 +44,7 @@ BENCHMARK(BM_WelchPsd_1e6Samples_4096Segments)->Unit(benchmark::kMillisecond);
 void BM_PeakAndBandPower_5001Bins(benchmark::State& state) {
   const double fs = 1000.0;
   const auto psd =
-      ridefit::signal::welch_psd(test_signal(60.0, fs), fs, {.segment_length_s = 10.0});
+      ridefit::signal::welch_psd(sine_on_noise(60.0, fs), fs, {.segment_length_s = 10.0});
   for (auto _ : state) {
     const auto peak = ridefit::signal::find_peak(psd, 0.5, 20.0);
     const double power = ridefit::signal::band_power(psd, 0.5, 80.0);
