@@ -227,3 +227,22 @@ TEST(CsvUnits, UnknownUnitListsTheAcceptedOnes) {
 
 }  // namespace
 }  // namespace ridefit::io
+
+namespace ridefit::io {
+namespace {
+
+TEST(CsvPsdUnit, EverySiUnitHasAPsdUnitThatReadsBack) {
+  EXPECT_EQ(psd_unit_of("m/s^2"), "(m/s^2)^2/Hz");
+  EXPECT_EQ(psd_unit_of("m"), "m^2/Hz");
+  EXPECT_EQ(psd_unit_of("1"), "1/Hz");
+  for (const char* unit :
+       {"s", "m", "m/s", "m/s^2", "N", "N/m", "Ns/m", "Hz", "rad", "rad/s", "rad/s^2", "1"}) {
+    const UnitConversion si = unit_to_si(unit);
+    EXPECT_EQ(si.si_unit, unit);
+    EXPECT_NO_THROW(unit_to_si(psd_unit_of(unit))) << unit;
+    EXPECT_EQ(unit_to_si(psd_unit_of(unit)).factor_to_si, 1.0) << unit;
+  }
+}
+
+}  // namespace
+}  // namespace ridefit::io

@@ -29,7 +29,7 @@ BENCHMARK(BM_WelchPsd_60s_1kHz_10sSegments)->Unit(benchmark::kMillisecond);
 // 10^6 samples (1000 s at 1 kHz), 4096-sample segments, 50 % overlap: 487 segments.
 void BM_WelchPsd_1e6Samples_4096Segments(benchmark::State& state) {
   const double fs = 1000.0;
-  const std::vector<double> x = test_signal(1000.0, fs);
+  const std::vector<double> x = sine_on_noise(1000.0, fs);
   const ridefit::signal::WelchOptions options{.segment_length_samples = 4096,
                                               .overlap_fraction = 0.5};
   for (auto _ : state) {

@@ -34,6 +34,10 @@ struct FrictionStudyFlags {
   SolverFlags solver;
 };
 
+nlohmann::json optional_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json();
+}
+
 std::string force_label(double force_N) { return fmt::format("Fc{:g}N", force_N); }
 
 void write_psds(const study::FrictionStudyResult& result, const std::filesystem::path& path) {
@@ -107,24 +111,28 @@ void run(const FrictionStudyFlags& flags) {
     nlohmann::json cases = nlohmann::json::array();
     if (!flags.json) {
       std::cout << fmt::format("\n{} ({})\n", stem, excitation_file);
-      std::cout << fmt::format("{:>7} {:>11} {:>12} {:>9} {:>9} {:>12} {:>12} {:>8}\n", "Fc[N]",
-                               "body_pk[Hz]", "wheel_pk[Hz]", "body_rms", "wheel_rms",
-                               "body_1.0-1.6", "body_2.8-4.2", "stuck[%]");
+      std::cout << fmt::format("{:>7} {:>11} {:>12} {:>9} {:>9} {:>9} {:>12} {:>12} {:>8}\n",
+                               "Fc[N]", "body_pk[Hz]", "wheel_pk[Hz]", "body_rms", "body_Wk",
+                               "wheel_rms", "body_1.0-1.6", "body_2.8-4.2", "stuck[%]");
     }
     for (const auto& c : result.cases) {
-      cases.push_back({{"coulomb_force_N", c.coulomb_force_N},
-                       {"body_peak_Hz", c.body_peak_Hz},
-                       {"wheel_peak_Hz", c.wheel_peak_Hz},
-                       {"body_acc_rms_m_per_s2", c.body_acc_rms_m_per_s2},
-                       {"wheel_acc_rms_m_per_s2", c.wheel_acc_rms_m_per_s2},
-                       {"body_slip_band_rms_m_per_s2", c.body_slip_band_rms_m_per_s2},
-                       {"body_stick_band_rms_m_per_s2", c.body_stick_band_rms_m_per_s2},
-                       {"stuck_share", c.stuck_share},
-                       {"solver", to_json(c.statistics)}});
+      cases.push_back(
+          {{"coulomb_force_N", c.coulomb_force_N},
+           {"body_peak_Hz", c.body_peak_Hz},
+           {"wheel_peak_Hz", c.wheel_peak_Hz},
+           {"body_acc_rms_m_per_s2", c.body_acc_rms_m_per_s2},
+           {"wheel_acc_rms_m_per_s2", c.wheel_acc_rms_m_per_s2},
+           {"body_acc_wk_rms_m_per_s2", optional_json(c.body_acc_wk_rms_m_per_s2)},
+           {"body_acc_wk_vdv_m_per_s1_75", optional_json(c.body_acc_wk_vdv_m_per_s1_75)},
+           {"body_slip_band_rms_m_per_s2", c.body_slip_band_rms_m_per_s2},
+           {"body_stick_band_rms_m_per_s2", c.body_stick_band_rms_m_per_s2},
+           {"stuck_share", c.stuck_share},
+           {"solver", to_json(c.statistics)}});
       if (!flags.json) {
         std::cout << fmt::format(
-            "{:>7g} {:>11.2f} {:>12.2f} {:>9.4f} {:>9.4f} {:>12.4f} {:>12.4f} {:>8.1f}\n",
+            "{:>7g} {:>11.2f} {:>12.2f} {:>9.4f} {:>9} {:>9.4f} {:>12.4f} {:>12.4f} {:>8.1f}\n",
             c.coulomb_force_N, c.body_peak_Hz, c.wheel_peak_Hz, c.body_acc_rms_m_per_s2,
+            c.body_acc_wk_rms_m_per_s2 ? fmt::format("{:.4f}", *c.body_acc_wk_rms_m_per_s2) : "-",
             c.wheel_acc_rms_m_per_s2, c.body_slip_band_rms_m_per_s2, c.body_stick_band_rms_m_per_s2,
             100.0 * c.stuck_share);
       }
@@ -135,7 +143,9 @@ void run(const FrictionStudyFlags& flags) {
   }
   if (!flags.json) {
     std::cout << "\nbody_pk: body-acceleration PSD peak in 0.5-6 Hz; wheel_pk: wheel PSD peak in "
-                 "8-30 Hz;\nRMS in m/s^2; body_1.0-1.6 / body_2.8-4.2: body RMS in the slip / "
+                 "8-30 Hz;\nRMS in m/s^2; body_Wk: ISO 2631-1 Wk-weighted body RMS (needs --rate "
+                 ">= 500 Hz); body_1.0-1.6 / "
+                 "body_2.8-4.2: body RMS in the slip / "
                  "stick band; stuck: share "
                  "of time with |F_f| < 0.95 Fc.\n";
   }

@@ -9,11 +9,13 @@ namespace ridefit::cli {
 void register_modes(CLI::App& app);
 void register_simulate(CLI::App& app);
 void register_friction_study(CLI::App& app);
+void register_analyse(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
   register_simulate(app);
   register_friction_study(app);
+  register_analyse(app);
 }
 
 }  // namespace ridefit::cli

@@ -30,7 +30,7 @@ struct KnownUnit {
 // tools write. Factors are exact by definition (g is the standard gravity of ISO 80000-3).
 constexpr double kG = 9.80665;
 constexpr double kDeg = 0.017453292519943295;  // π/180
-constexpr std::array<KnownUnit, 30> kUnits{{
+constexpr std::array<KnownUnit, 38> kUnits{{
     {"s", 1.0, "s"},
     {"ms", 1e-3, "s"},
     {"m", 1.0, "m"},
@@ -63,6 +63,14 @@ constexpr std::array<KnownUnit, 30> kUnits{{
     {"m^3", 1.0, "m^3"},
     {"cycles/m", 1.0, "cycles/m"},
     {"N^2/Hz", 1.0, "N^2/Hz"},
+    {"(m/s)^2/Hz", 1.0, "(m/s)^2/Hz"},
+    {"rad^2/Hz", 1.0, "rad^2/Hz"},
+    {"(rad/s)^2/Hz", 1.0, "(rad/s)^2/Hz"},
+    {"1/Hz", 1.0, "1/Hz"},
+    {"(Ns/m)^2/Hz", 1.0, "(Ns/m)^2/Hz"},
+    {"(N/m)^2/Hz", 1.0, "(N/m)^2/Hz"},
+    {"s^2/Hz", 1.0, "s^2/Hz"},
+    {"Hz^2/Hz", 1.0, "Hz^2/Hz"},
 }};
 
 std::optional<UnitConversion> find_unit(std::string_view unit) {
@@ -341,6 +349,12 @@ void CsvTable::write(const std::filesystem::path& path) const {
     }
     out << buffer;
   });
+}
+
+std::string psd_unit_of(const std::string& si_unit) {
+  if (si_unit == "1") return "1/Hz";
+  const bool compound = si_unit.find('/') != std::string::npos;
+  return (compound ? "(" + si_unit + ")" : si_unit) + "^2/Hz";
 }
 
 }  // namespace ridefit::io

@@ -58,4 +58,8 @@ struct UnitConversion {
 };
 UnitConversion unit_to_si(const std::string& unit);
 
+// The unit of a one-sided PSD of a channel in `si_unit`: "m/s^2" → "(m/s^2)^2/Hz", "m" →
+// "m^2/Hz", "1" → "1/Hz". Every channel unit's PSD unit is one that read() accepts.
+std::string psd_unit_of(const std::string& si_unit);
+
 }  // namespace ridefit::io

@@ -1,5 +1,4 @@
 #include "ridefit/study/friction_study.h"
-#include "ridefit/signal/statistics.h"
 
 #include <algorithm>
 #include <atomic>
@@ -8,8 +7,11 @@
 #include <mutex>
 #include <thread>
 
+#include "ridefit/comfort/vibration_metrics.h"
+#include "ridefit/comfort/weighting_filter.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/spectrum_peak.h"
+#include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"
 
 namespace ridefit::study {
@@ -39,6 +41,12 @@ FrictionCase run_case(const model::QuarterCarParameters<double>& base, double co
       signal::find_peak(wheel, options.wheel_band_low_Hz, options.wheel_band_high_Hz).frequency_Hz;
   result.body_acc_rms_m_per_s2 = signal::rms(response.body_acc_m_per_s2);
   result.wheel_acc_rms_m_per_s2 = signal::rms(response.wheel_acc_m_per_s2);
+  if (fs >= comfort::minimum_sample_rate_Hz(comfort::Weighting::kWk)) {
+    const comfort::VibrationMetrics body_wk = comfort::vibration_metrics(
+        comfort::apply_weighting(comfort::Weighting::kWk, response.body_acc_m_per_s2, fs), fs);
+    result.body_acc_wk_rms_m_per_s2 = body_wk.weighted_rms_m_per_s2;
+    result.body_acc_wk_vdv_m_per_s1_75 = body_wk.vdv_m_per_s1_75;
+  }
   result.body_slip_band_rms_m_per_s2 =
       signal::band_rms(body, options.slip_band_low_Hz, options.slip_band_high_Hz);
   result.body_stick_band_rms_m_per_s2 =

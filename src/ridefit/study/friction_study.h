@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct FrictionCase {
   double wheel_peak_Hz = 0.0;  // highest wheel-acceleration PSD in the wheel band
   double body_acc_rms_m_per_s2 = 0.0;
   double wheel_acc_rms_m_per_s2 = 0.0;
+  // ISO 2631-1 Wk-weighted RMS and VDV of the body acceleration (the seat-rail comfort value);
+  // empty when the output rate is below what the Wk filter needs (weighting_filter.h).
+  std::optional<double> body_acc_wk_rms_m_per_s2;
+  std::optional<double> body_acc_wk_vdv_m_per_s1_75;
   double body_slip_band_rms_m_per_s2 = 0.0;   // from the PSD over the slip band
   double body_stick_band_rms_m_per_s2 = 0.0;  // from the PSD over the stick band
   double stuck_share = 0.0;                   // share of samples with stuck = 1
