@@ -1,7 +1,6 @@
 // Smoke tests of every subcommand and the bad-input contract: a clear message, exit code 2
 // and no output file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -9,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "support/cli_runner.h"
 #include "support/passat.h"
 
 namespace ridefit {
@@ -16,22 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CliRun run_cli(const std::string& arguments) {
-  const std::string command = std::string(RIDEFIT_CLI) + " " + arguments + " 2>&1";
-  CliRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using testing::CliRun;
+using testing::run_cli;
 
 class Cli : public ::testing::Test {
  protected:

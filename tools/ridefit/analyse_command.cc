@@ -196,6 +196,15 @@ void write_psd_csv(const study::RecordingAnalysis& analysis, const AnalyseFlags&
   table.write(flags.psd_file);
 }
 
+// The unit of a named metric of a channel in `unit`.
+std::string metric_unit(const std::string& metric, const std::string& unit) {
+  if (metric == "vdv") return unit == "m/s^2" ? "m/s^1.75" : unit + "·s^0.25";
+  if (metric == "crest_factor" || metric.ends_with("_ratio") || metric.ends_with("_share")) {
+    return "1";
+  }
+  return unit;
+}
+
 // The metric a person compares across levels: the weighted RMS where there is one.
 std::string headline_metric(const study::ChannelMetrics& c) {
   if (c.weighted) return "weighted_rms";
@@ -228,7 +237,7 @@ io::Figure figure_of(const study::RecordingAnalysis& analysis, const AnalyseFlag
                                 io::SeriesStyle::kLines});
       }
     } else {
-      panel.series.push_back({s.name, s.psd.frequency_Hz, s.psd.psd, s.interval.lower,
+      panel.series.push_back({fmt::format("{} ({:g} % band)", s.name, 100.0 * options.confidence), s.psd.frequency_Hz, s.psd.psd, s.interval.lower,
                               s.interval.upper, io::SeriesStyle::kLines});
     }
     figure.panels.push_back(std::move(panel));
@@ -236,9 +245,10 @@ io::Figure figure_of(const study::RecordingAnalysis& analysis, const AnalyseFlag
     const std::string metric = headline_metric(analysis.recordings.front().channels[c]);
     for (const auto& row : correlations) {
       if (row.channel != s.name || row.metric != metric) continue;
-      io::PlotPanel trend =
-          io::xy_panel(fmt::format("{} {}: R = {:.3f}", s.name, metric, row.pearson_r),
-                       flags.level_name, metric);
+      io::PlotPanel trend = io::xy_panel(
+          fmt::format("{} {}: R = {:.3f}", s.name, metric, row.pearson_r), flags.level_name,
+          fmt::format("{} [{}]", metric,
+                      metric_unit(metric, analysis.recordings.front().channels[c].unit)));
       trend.series.push_back(
           {"recordings", row.levels, row.values, {}, {}, io::SeriesStyle::kPoints});
       const auto [lo, hi] = std::minmax_element(row.levels.begin(), row.levels.end());

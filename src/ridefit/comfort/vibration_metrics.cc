@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "ridefit/io/input_error.h"
-#include "ridefit/signal/require_finite.h"
+#include "ridefit/signal/sample_check.h"
 #include "ridefit/signal/statistics.h"
 
 namespace ridefit::comfort {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "ridefit/io/input_error.h"
-#include "ridefit/signal/require_finite.h"
+#include "ridefit/signal/sample_check.h"
 
 namespace ridefit::comfort {
 

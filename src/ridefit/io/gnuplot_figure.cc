@@ -88,13 +88,17 @@ std::string range(const std::optional<std::pair<double, double>>& r) {
 
 void write_panel(std::ostream& out, const PlotPanel& panel, std::size_t p) {
   out << "reset\n";  // a panel does not inherit the previous one's axes
-  out << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\nset key top right font ',9'\n";
+  out << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\nset key top right opaque font ',9'\n";
   out << "set title " << gnuplot_quote(panel.title) << "\n";
   out << "set xlabel " << gnuplot_quote(panel.x_label) << "\n";
   out << "set ylabel " << gnuplot_quote(panel.y_label) << "\n";
   out << (panel.x_scale == AxisScale::kLog ? "set logscale x\n" : "unset logscale x\n");
   out << (panel.y_scale == AxisScale::kLog ? "set logscale y\nset format y '%.0e'\n"
                                            : "unset logscale y\n");
+  // Keep points off the frame on linear axes (log axes start where the data do).
+  if (panel.x_scale == AxisScale::kLinear && panel.y_scale == AxisScale::kLinear) {
+    out << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\n";
+  }
   out << "set xrange " << range(panel.x_range) << "\n";
   out << "set yrange " << range(panel.y_range) << "\n";
   std::vector<std::string> items;

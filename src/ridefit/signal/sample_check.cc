@@ -30,4 +30,15 @@ void check_sample_rate(std::string_view caller, double sample_rate_Hz) {
   }
 }
 
+void require_finite_samples(std::span<const double> samples, std::string_view context,
+                            double sample_rate_Hz) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (!std::isfinite(samples[i])) {
+      throw InputError(
+          fmt::format("{}: sample {} (t = {} s) is {}; every sample must be a finite number",
+                      context, i, static_cast<double>(i) / sample_rate_Hz, samples[i]));
+    }
+  }
+}
+
 }  // namespace ridefit::signal

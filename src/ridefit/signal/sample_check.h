@@ -15,4 +15,10 @@ void check_samples(std::string_view caller, std::span<const double> samples,
 // Throws InputError, prefixed with `caller`, unless sample_rate_Hz is positive and finite.
 void check_sample_rate(std::string_view caller, double sample_rate_Hz);
 
+// Throws InputError naming the first non-finite sample (index and time i/fs) and `context`
+// (e.g. "Wk weighting"), so NaN or ±inf never flows silently into a filter or a metric whose
+// result would then be NaN without saying where it came from.
+void require_finite_samples(std::span<const double> samples, std::string_view context,
+                            double sample_rate_Hz);
+
 }  // namespace ridefit::signal
