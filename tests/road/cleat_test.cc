@@ -14,7 +14,7 @@ namespace {
 
 // ∫ h dx of the road as driven, by sampling it over time.
 double area_m2(const SpatialProfileRoad& road) {
-  const double v = road.speed_m_per_s();
+  const double v = *road.speed_m_per_s();
   const double dt = 1e-5;
   double sum = 0.0;
   for (double t = 0.0; t < road.duration_s(); t += dt) sum += road.at(t).elevation_m * v * dt;

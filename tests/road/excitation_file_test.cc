@@ -51,7 +51,7 @@ TEST(ExcitationDatasets, DrivenRoadsHaveTheirSpeedsAndDurations) {
     const auto road = load_excitation(kExcitations / e.file);
     const auto* profile = dynamic_cast<const SpatialProfileRoad*>(road.get());
     ASSERT_NE(profile, nullptr);
-    EXPECT_DOUBLE_EQ(profile->speed_m_per_s(), e.speed_m_per_s);
+    EXPECT_DOUBLE_EQ(profile->speed_m_per_s().value(), e.speed_m_per_s);
     EXPECT_NEAR(profile->duration_s(), e.duration_s, 1e-12);
     EXPECT_EQ(road->at(0.0).elevation_m, 0.0);  // every dataset starts the car on h = 0
   }

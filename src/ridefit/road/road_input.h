@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 namespace ridefit::road {
 
 // Road elevation under one tyre and its rate, at a time.
@@ -21,6 +23,9 @@ class RoadInput {
   // the sample interval of a sampled road, a fraction of the shortest period of an
   // analytic one.
   virtual double max_step_s() const = 0;
+  // The driving speed of a road driven over a profile; empty for roads given over time (a
+  // sweep on a rig, a measured record), where a rear wheel's delay must come from elsewhere.
+  virtual std::optional<double> speed_m_per_s() const { return std::nullopt; }
 };
 
 }  // namespace ridefit::road

@@ -33,7 +33,7 @@ class SpatialProfileRoad : public RoadInput {
   SpatialProfileRoad with_offset(double offset_m) const;
 
   const UniformSpline& profile() const { return profile_; }
-  double speed_m_per_s() const { return speed_m_per_s_; }
+  std::optional<double> speed_m_per_s() const override { return speed_m_per_s_; }
   double origin_m() const { return origin_m_; }
   double offset_m() const { return offset_m_; }
 

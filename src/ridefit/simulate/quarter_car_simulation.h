@@ -5,6 +5,7 @@
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/road/road_input.h"
 #include "ridefit/simulate/integrator.h"
+#include "ridefit/simulate/simulation_options.h"
 
 namespace ridefit::simulate {
 
@@ -22,15 +23,6 @@ struct QuarterCarResponse {
   std::vector<double> stuck;
   SolverStatistics statistics;
 };
-
-struct SimulationOptions {
-  double output_rate_Hz = 1000.0;
-  double duration_s = 0.0;  // 0 = the road's duration
-  IntegratorOptions integrator;
-};
-
-// Ten channels of 8 bytes each: 2e7 samples keep a run under 2 GB.
-constexpr double kMaxOutputSamples = 2e7;
 
 // Runs the car from static equilibrium at rest over the road and samples every channel at
 // output_rate_Hz (the integrator's dense output gives the states there; accelerations

@@ -1,0 +1,189 @@
+#include "ridefit/io/half_car_file.h"
+
+#include <fmt/core.h>
+
+#include <sstream>
+
+#include "ridefit/io/input_error.h"
+#include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/yaml_map.h"
+
+namespace ridefit::io {
+namespace {
+
+// Plausibility limits, as for the quarter car: far beyond any road vehicle, close enough to
+// catch a unit slip or a typo before it becomes a NaN in the solver.
+constexpr double kMaxMass_kg = 1e5;
+constexpr double kMaxInertia_kg_m2 = 1e6;
+constexpr double kMaxStiffness_N_per_m = 1e10;
+constexpr double kMaxDamping_Ns_per_m = 1e7;
+constexpr double kMaxDistance_m = 20.0;
+
+std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlMap& axle) {
+  model::AxleTopology topology;
+  model::HalfCarAxle<double> p{};
+  topology.suspension = axle.choice("suspension", {"passive", "strut"}) == "strut"
+                            ? model::AxleSuspension::kStrut
+                            : model::AxleSuspension::kPassive;
+  const bool strut = topology.suspension == model::AxleSuspension::kStrut;
+  if (strut || axle.has("damper_state")) {
+    topology.damper_state =
+        parse_damper_state(axle.text("damper_state"), axle.locate("damper_state"));
+  }
+  p.unsprung_mass_kg = axle.positive_up_to("unsprung_mass_kg", kMaxMass_kg);
+  p.tyre_stiffness_N_per_m = axle.positive_up_to("tyre_stiffness_N_per_m", kMaxStiffness_N_per_m);
+  p.tyre_damping_Ns_per_m = axle.non_negative_up_to("tyre_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  p.spring_stiffness_N_per_m =
+      axle.positive_up_to("spring_stiffness_N_per_m", kMaxStiffness_N_per_m);
+  // A strut's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0 there.
+  p.damping_Ns_per_m = strut ? axle.positive_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m)
+                             : axle.non_negative_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  p.top_mount_stiffness_N_per_m = 1.0;
+  if (strut || axle.has("top_mount_stiffness_N_per_m")) {
+    p.top_mount_stiffness_N_per_m =
+        axle.positive_up_to("top_mount_stiffness_N_per_m", kMaxStiffness_N_per_m);
+  }
+  const bool friction = strut && topology.damper_state == model::DamperState::kStickSlip;
+  p.dahl_sigma0_N_per_m = 1.0;
+  p.coulomb_force_N = 0.0;
+  p.dahl_exponent = 1.0;
+  if (friction || axle.has("dahl_sigma0_N_per_m") || axle.has("coulomb_force_N") ||
+      axle.has("dahl_exponent")) {
+    p.dahl_sigma0_N_per_m = axle.positive_up_to("dahl_sigma0_N_per_m", 1e3 * kMaxStiffness_N_per_m);
+    p.coulomb_force_N = axle.non_negative_up_to("coulomb_force_N", 1e5);
+    p.dahl_exponent = axle.number_in("dahl_exponent", 0.1, 10.0);
+  }
+  axle.finish();
+  return {topology, p};
+}
+
+model::SuspendedMass<double> read_mass(const YamlMap& m) {
+  return {m.positive_up_to("mass_kg", kMaxMass_kg),
+          m.positive_up_to("stiffness_N_per_m", kMaxStiffness_N_per_m),
+          m.non_negative_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m)};
+}
+
+model::SemiActiveControl read_control(const YamlMap& c) {
+  model::SemiActiveControl control;
+  const std::string law = c.choice("law", {"passive", "skyhook", "groundhook", "hybrid"});
+  if (law == "passive") {
+    c.finish();
+    return control;
+  }
+  control.law = law == "skyhook"      ? model::ControlLaw::kSkyhook
+                : law == "groundhook" ? model::ControlLaw::kGroundhook
+                                      : model::ControlLaw::kHybrid;
+  control.min_damping_Ns_per_m = c.non_negative_up_to("min_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  control.max_damping_Ns_per_m = c.positive_up_to("max_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  if (control.min_damping_Ns_per_m > control.max_damping_Ns_per_m) {
+    throw InputError(fmt::format(
+        "{} is {} Ns/m, above max_damping_Ns_per_m {} Ns/m; a damper's limits need c_min <= "
+        "c_max",
+        c.locate("min_damping_Ns_per_m"), control.min_damping_Ns_per_m,
+        control.max_damping_Ns_per_m));
+  }
+  if (control.law != model::ControlLaw::kGroundhook) {
+    control.skyhook_damping_Ns_per_m =
+        c.non_negative_up_to("skyhook_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  }
+  if (control.law != model::ControlLaw::kSkyhook) {
+    control.groundhook_damping_Ns_per_m =
+        c.non_negative_up_to("groundhook_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  }
+  if (control.law == model::ControlLaw::kHybrid) {
+    control.skyhook_share = c.number_in("skyhook_share", 0.0, 1.0);
+  }
+  c.finish();
+  return control;
+}
+
+HalfCarFile read_half_car(const YamlMap& file) {
+  file.choice("model", {"half_car"});
+  HalfCarFile result{};
+  auto& p = result.parameters;
+  p.body_mass_kg = file.positive_up_to("body_mass_kg", kMaxMass_kg);
+  p.pitch_inertia_kg_m2 = file.positive_up_to("pitch_inertia_kg_m2", kMaxInertia_kg_m2);
+  p.front_axle_distance_m = file.positive_up_to("front_axle_distance_m", kMaxDistance_m);
+  p.rear_axle_distance_m = file.positive_up_to("rear_axle_distance_m", kMaxDistance_m);
+  p.seat_distance_m = file.number_in("seat_distance_m", -kMaxDistance_m, kMaxDistance_m);
+  std::tie(result.topology.front, p.front) = read_axle(file.map("front"));
+  std::tie(result.topology.rear, p.rear) = read_axle(file.map("rear"));
+  const YamlMap seat = file.map("seat");
+  p.seat = read_mass(seat);
+  seat.finish();
+  const YamlMap lower = file.map("lower_body");
+  p.lower_body = read_mass(lower);
+  lower.finish();
+  const YamlMap upper = file.map("upper_body");
+  p.upper_body = read_mass(upper);
+  result.topology.upper_body_support =
+      upper.choice("supported_by", {"seat", "lower_body"}) == "seat"
+          ? model::UpperBodySupport::kSeat
+          : model::UpperBodySupport::kLowerBody;
+  upper.finish();
+  if (file.has("control")) result.topology.control = read_control(file.map("control"));
+  file.finish();
+  return result;
+}
+
+std::vector<std::string> split_dotted(const std::string& key) {
+  std::vector<std::string> parts;
+  std::stringstream in(key);
+  std::string part;
+  while (std::getline(in, part, '.')) parts.push_back(part);
+  return parts;
+}
+
+// The scalar node at a dotted path, or an undefined node. Recursion rather than `node =
+// node[part]`: assigning to a yaml-cpp node overwrites what it refers to.
+YAML::Node find_scalar(const YAML::Node& node, const std::vector<std::string>& parts,
+                       std::size_t i = 0) {
+  if (i == parts.size()) return node.IsScalar() ? node : YAML::Node(YAML::NodeType::Undefined);
+  if (!node.IsMap() || parts[i].empty() || !node[parts[i]]) {
+    return YAML::Node(YAML::NodeType::Undefined);
+  }
+  return find_scalar(node[parts[i]], parts, i + 1);
+}
+
+}  // namespace
+
+bool half_car_has_key(const std::filesystem::path& path, const std::string& dotted_key) {
+  YamlMap::load(path);  // the file's own errors first
+  const YAML::Node root = YAML::LoadFile(path.string());
+  return find_scalar(root, split_dotted(dotted_key)).IsDefined();
+}
+
+HalfCarFile load_half_car(const std::filesystem::path& path,
+                          const std::vector<KeyOverride>& overrides, const std::string& origin) {
+  const YamlMap file = YamlMap::load(path);
+  if (overrides.empty()) return read_half_car(file);
+  YAML::Node root = YAML::Clone(YAML::LoadFile(path.string()));
+  for (const auto& [key, value] : overrides) {
+    if (key == "model") {
+      throw InputError(fmt::format("{} model: the model type cannot be replaced", origin));
+    }
+    YAML::Node target = find_scalar(root, split_dotted(key));
+    if (!target.IsDefined()) {
+      throw InputError(
+          fmt::format("{} {}: not a key of {} (use a dotted path to a key the file has, e.g. "
+                      "front.damping_Ns_per_m)",
+                      origin, key, path.string()));
+    }
+    target = value;
+  }
+  try {
+    return read_half_car(YamlMap(root, path, ""));
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    for (const auto& [key, value] : overrides) {
+      const auto last = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+      if (message.find("'" + key + "'") != std::string::npos ||
+          message.find(last) != std::string::npos) {
+        throw InputError(fmt::format("{} (given as {} {}={})", message, origin, key, value));
+      }
+    }
+    throw;
+  }
+}
+
+}  // namespace ridefit::io

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ridefit/model/half_car.h"
+
+namespace ridefit::io {
+
+// A half-car model file (YAML; datasets/vehicles/ajayi_half_car.yaml has every key):
+//
+//   model: half_car
+//   body_mass_kg: 575
+//   pitch_inertia_kg_m2: 769
+//   front_axle_distance_m: 1.4      # a1, ahead of the centre of gravity
+//   rear_axle_distance_m: 1.4       # a2, behind it
+//   seat_distance_m: 0.65           # a3, ahead of it (negative: behind)
+//   front:                          # and rear:, the same keys
+//     suspension: passive           # passive (spring ∥ damper) | strut (MacPherson)
+//     damper_state: stick_slip      # strut: slip | stick | stick_slip
+//     unsprung_mass_kg: 60
+//     tyre_stiffness_N_per_m: 190000
+//     tyre_damping_Ns_per_m: 350
+//     spring_stiffness_N_per_m: 16812
+//     damping_Ns_per_m: 1000
+//     top_mount_stiffness_N_per_m: 488000   # required for a strut, checked if present
+//     dahl_sigma0_N_per_m: 5.0e6            # required for stick_slip, checked if present
+//     coulomb_force_N: 60
+//     dahl_exponent: 1
+//   seat:       {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …}
+//   lower_body: {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …}
+//   upper_body: {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …,
+//                supported_by: seat}  # seat (seed 001) | lower_body
+//   control:                        # optional; default passive
+//     law: skyhook                  # passive | skyhook | groundhook | hybrid
+//     min_damping_Ns_per_m: 300     # c_min <= c_max, both required unless passive
+//     max_damping_Ns_per_m: 4000
+//     skyhook_damping_Ns_per_m: 2500    # skyhook and hybrid
+//     groundhook_damping_Ns_per_m: 2500 # groundhook and hybrid
+//     skyhook_share: 0.5                # hybrid, in [0, 1]
+//
+// Unknown keys, missing keys, non-numbers and out-of-range values are InputErrors naming the
+// file and the dotted key (e.g. 'front.damping_Ns_per_m').
+struct HalfCarFile {
+  model::HalfCarTopology topology;
+  model::HalfCarParameters<double> parameters;
+
+  model::HalfCar make_model() const { return {topology, parameters}; }
+};
+
+// A replacement for one key of the file, by dotted path: {"front.damping_Ns_per_m", "1500"},
+// {"front.suspension", "strut"}. The key must exist in the file (an unknown one is an
+// InputError naming it and `origin`, e.g. "--set" or the study file), so a typo never adds a
+// key that nothing reads.
+using KeyOverride = std::pair<std::string, std::string>;
+
+HalfCarFile load_half_car(const std::filesystem::path& path,
+                          const std::vector<KeyOverride>& overrides = {},
+                          const std::string& origin = "--set");
+
+// True when `dotted_key` names a scalar of the file (for checking a study before it runs).
+bool half_car_has_key(const std::filesystem::path& path, const std::string& dotted_key);
+
+}  // namespace ridefit::io

@@ -1,0 +1,319 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "ridefit/model/kelvin_voigt.h"
+#include "ridefit/model/semi_active_control.h"
+#include "ridefit/model/strut_damper_path.h"
+#include "ridefit/road/road_input.h"
+
+namespace ridefit::model {
+
+// Generalised coordinates of the half car with seat and occupant (seed 001, Figure 1), in
+// this order. Displacements are vertical, positive upwards, from static equilibrium; pitch θ
+// is positive nose up, so a body point a distance x ahead of the centre of gravity moves by
+// z_b + x·θ (the front axle is at x = a1, the rear axle at x = −a2, the seat at x = a3).
+enum HalfCarDof : int {
+  kBodyHeave = 0,
+  kBodyPitch,
+  kFrontWheel,
+  kRearWheel,
+  kSeat,
+  kLowerBody,
+  kUpperBody,
+  kHalfCarDofs
+};
+
+// One axle: wheel, tyre and suspension. The strut keys are read only when the axle is a strut.
+template <typename T>
+struct HalfCarAxle {
+  T unsprung_mass_kg;
+  T tyre_stiffness_N_per_m;
+  T tyre_damping_Ns_per_m;
+  T spring_stiffness_N_per_m;
+  T damping_Ns_per_m;
+  T top_mount_stiffness_N_per_m;
+  T dahl_sigma0_N_per_m;
+  T coulomb_force_N;
+  T dahl_exponent;
+
+  StrutDamperPath<T> damper_path() const {
+    return {{top_mount_stiffness_N_per_m},
+            {damping_Ns_per_m},
+            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
+  }
+  template <typename U>
+  HalfCarAxle<U> cast() const {
+    return {U(unsprung_mass_kg),         U(tyre_stiffness_N_per_m), U(tyre_damping_Ns_per_m),
+            U(spring_stiffness_N_per_m), U(damping_Ns_per_m),       U(top_mount_stiffness_N_per_m),
+            U(dahl_sigma0_N_per_m),      U(coulomb_force_N),        U(dahl_exponent)};
+  }
+};
+
+// A mass on a spring ∥ damper (the seat on the body, a body segment on the seat).
+template <typename T>
+struct SuspendedMass {
+  T mass_kg;
+  T stiffness_N_per_m;
+  T damping_Ns_per_m;
+
+  template <typename U>
+  SuspendedMass<U> cast() const {
+    return {U(mass_kg), U(stiffness_N_per_m), U(damping_Ns_per_m)};
+  }
+};
+
+template <typename T>
+struct HalfCarParameters {
+  T body_mass_kg;
+  T pitch_inertia_kg_m2;
+  T front_axle_distance_m;  // a1, ahead of the centre of gravity
+  T rear_axle_distance_m;   // a2, behind it
+  T seat_distance_m;        // a3, ahead of it (negative: behind)
+  HalfCarAxle<T> front;
+  HalfCarAxle<T> rear;
+  SuspendedMass<T> seat;
+  SuspendedMass<T> lower_body;
+  SuspendedMass<T> upper_body;
+
+  template <typename U>
+  HalfCarParameters<U> cast() const {
+    return {U(body_mass_kg),
+            U(pitch_inertia_kg_m2),
+            U(front_axle_distance_m),
+            U(rear_axle_distance_m),
+            U(seat_distance_m),
+            front.template cast<U>(),
+            rear.template cast<U>(),
+            seat.template cast<U>(),
+            lower_body.template cast<U>(),
+            upper_body.template cast<U>()};
+  }
+  T wheelbase_m() const { return front_axle_distance_m + rear_axle_distance_m; }
+};
+
+// How an axle's suspension is built. kPassive: coil spring ∥ damper between body and wheel
+// (seed 001). kStrut: coil spring ∥ damper path of a MacPherson strut (top mount in series with
+// the damper, and Dahl friction in stick/slip; seed 000), in `damper_state`.
+enum class AxleSuspension { kPassive, kStrut };
+
+struct AxleTopology {
+  AxleSuspension suspension = AxleSuspension::kPassive;
+  DamperState damper_state = DamperState::kStickSlip;  // read for a strut only
+
+  int internal_state_count() const {
+    return suspension == AxleSuspension::kStrut ? StrutDamperPath<double>::state_count(damper_state)
+                                                : 0;
+  }
+};
+
+// What the upper body rests on. Seed 001's matrices (Eq. 1) connect both body segments to the
+// seat (their springs k2 and k3 each couple to x_se); kLowerBody chains them instead.
+enum class UpperBodySupport { kSeat, kLowerBody };
+
+struct HalfCarTopology {
+  AxleTopology front;
+  AxleTopology rear;
+  UpperBodySupport upper_body_support = UpperBodySupport::kSeat;
+  SemiActiveControl control;  // applies to both axles' dampers
+};
+
+// The road under both wheels at one instant.
+struct AxleRoads {
+  road::RoadSample front;
+  road::RoadSample rear;
+};
+
+// Every output of one instant (SI; signs as in HalfCar).
+struct HalfCarOutputs {
+  double front_road_m = 0, rear_road_m = 0;
+  double body_acc_m_per_s2 = 0;  // heave at the centre of gravity
+  double pitch_acc_rad_per_s2 = 0;
+  double seat_acc_m_per_s2 = 0, lower_body_acc_m_per_s2 = 0, upper_body_acc_m_per_s2 = 0;
+  double front_wheel_acc_m_per_s2 = 0, rear_wheel_acc_m_per_s2 = 0;
+  double front_travel_m = 0, rear_travel_m = 0;              // extension positive
+  double front_tyre_force_N = 0, rear_tyre_force_N = 0;      // dynamic, compression positive
+  double front_damper_force_N = 0, rear_damper_force_N = 0;  // hydraulic, tension positive
+  double front_friction_force_N = 0, rear_friction_force_N = 0;
+  double front_damping_Ns_per_m = 0, rear_damping_Ns_per_m = 0;  // the controller's choice
+  double front_stuck = 0, rear_stuck = 0;  // QuarterCar's rule: |F_f| < 0.95·Fc
+};
+
+// The 7-DOF half car with seat and occupant of seed 001, assembled from elements: nothing is
+// typed as a matrix. Each element joins a point "above" (attachment vector g_a over the
+// coordinates) to a point "below" (g_b); its extension is e = (g_a − g_b)·q and its tension F
+// pushes the two apart by −F·(g_a − g_b) on the generalised forces. The mass matrix is
+// diag(m_b, J, m_uf, m_ur, m_se, m_2, m_3).
+//
+// Elements: per axle the coil spring and the damper (passive: c·ė, with the controller's c;
+// strut: the damper path of StrutDamperPath, whose internal states are the damper deflection
+// z_c and the Dahl force F_f) between the body point over the axle and the wheel, and the tyre
+// (Kelvin-Voigt, compression positive, point contact, never lifts off) between wheel and road;
+// the seat between the body point at a3 and the seat mass; the lower body on the seat; the
+// upper body on the seat (seed 001) or on the lower body.
+//
+// State: [q (7), q' (7), front strut states (z_c, F_f as the damper state has them), rear strut
+// states]. Sizes: 14 for passive axles, up to 18 with two stick/slip struts.
+class HalfCar {
+ public:
+  HalfCar(const HalfCarTopology& topology, const HalfCarParameters<double>& parameters);
+
+  const HalfCarTopology& topology() const { return topology_; }
+  const HalfCarParameters<double>& parameters() const { return parameters_; }
+  int state_size() const {
+    return 2 * kHalfCarDofs + topology_.front.internal_state_count() +
+           topology_.rear.internal_state_count();
+  }
+  // True when the model is linear: no Dahl friction (no stick/slip strut) and passive damping.
+  bool is_linear() const;
+  std::vector<std::string> state_names() const;
+
+  // x' = f(t, x, roads; p). Pure.
+  template <typename T>
+  void derivatives(const T* x, const AxleRoads& roads, const HalfCarParameters<T>& p,
+                   T* xdot) const;
+  template <typename T>
+  void derivatives(const T* x, const AxleRoads& roads, T* xdot) const {
+    derivatives(x, roads, parameters_.cast<T>(), xdot);
+  }
+
+  HalfCarOutputs outputs(const double* x, const AxleRoads& roads) const;
+
+ private:
+  template <typename T>
+  struct AxleForces {
+    T suspension_N;  // spring + damper path, tension positive
+    T damper_N;
+    T friction_N;
+    T damping_Ns_per_m;
+    T tyre_N;  // compression positive
+  };
+
+  template <typename T>
+  AxleForces<T> axle_forces(const AxleTopology& topology, const HalfCarAxle<T>& axle,
+                            const T& travel, const T& travel_rate, const T& body_velocity,
+                            const T& wheel_velocity, const T& wheel, const road::RoadSample& road,
+                            const T* internal, T* internal_rate) const;
+
+  HalfCarTopology topology_;
+  HalfCarParameters<double> parameters_;
+};
+
+// M, C and K of the linear model with both axles passive, assembled from the same elements
+// (for the tests of symmetry and definiteness, and for modal analysis). With struts the damper
+// path adds states, so this is an std::invalid_argument.
+struct MassDampingStiffness {
+  Eigen::Matrix<double, kHalfCarDofs, kHalfCarDofs> mass, damping, stiffness;
+};
+MassDampingStiffness assemble_mass_damping_stiffness(const HalfCarTopology& topology,
+                                                     const HalfCarParameters<double>& p);
+
+// --- implementation -------------------------------------------------------------------------
+
+template <typename T>
+HalfCar::AxleForces<T> HalfCar::axle_forces(const AxleTopology& topology,
+                                            const HalfCarAxle<T>& axle, const T& travel,
+                                            const T& travel_rate, const T& body_velocity,
+                                            const T& wheel_velocity, const T& wheel,
+                                            const road::RoadSample& road, const T* internal,
+                                            T* internal_rate) const {
+  AxleForces<T> f;
+  f.damping_Ns_per_m =
+      topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m);
+  f.friction_N = T(0.0);
+  T path(0.0);
+  if (topology.suspension == AxleSuspension::kPassive) {
+    path = f.damping_Ns_per_m * travel_rate;
+    f.damper_N = path;
+  } else {
+    StrutDamperPath<T> strut = axle.damper_path();
+    strut.damper.damping_Ns_per_m = f.damping_Ns_per_m;
+    switch (topology.damper_state) {
+      case DamperState::kStick:
+        path = strut.path_force_N(travel, T(0.0));
+        f.damper_N = path;  // the locked damper carries the whole path force
+        break;
+      case DamperState::kSlip:
+        path = strut.path_force_N(travel, internal[0]);
+        internal_rate[0] = strut.damper_rate_m_per_s(path, T(0.0));
+        f.damper_N = path;
+        break;
+      case DamperState::kStickSlip: {
+        path = strut.path_force_N(travel, internal[0]);
+        const T damper_rate = strut.damper_rate_m_per_s(path, internal[1]);
+        internal_rate[0] = damper_rate;
+        internal_rate[1] = strut.friction.force_rate_N_per_s(internal[1], damper_rate);
+        f.damper_N = path - internal[1];
+        f.friction_N = internal[1];
+        break;
+      }
+    }
+  }
+  f.suspension_N = axle.spring_stiffness_N_per_m * travel + path;
+  const KelvinVoigt<T> tyre{axle.tyre_stiffness_N_per_m, axle.tyre_damping_Ns_per_m};
+  f.tyre_N = -tyre.force_N(wheel - road.elevation_m, wheel_velocity - road.rate_m_per_s);
+  return f;
+}
+
+template <typename T>
+void HalfCar::derivatives(const T* x, const AxleRoads& roads, const HalfCarParameters<T>& p,
+                          T* xdot) const {
+  const T* q = x;
+  const T* v = x + kHalfCarDofs;
+  const T* internal = x + 2 * kHalfCarDofs;
+  T* internal_rate = xdot + 2 * kHalfCarDofs;
+  const T a1 = p.front_axle_distance_m, a2 = p.rear_axle_distance_m, a3 = p.seat_distance_m;
+  T force[kHalfCarDofs];
+  for (T& f : force) f = T(0.0);
+
+  // Axles: body point z_b + x·θ above the wheel.
+  auto axle = [&](const AxleTopology& top, const HalfCarAxle<T>& ax, const T& arm, int wheel,
+                  const road::RoadSample& road, const T* states, T* rates) {
+    const T body = q[kBodyHeave] + arm * q[kBodyPitch];
+    const T body_velocity = v[kBodyHeave] + arm * v[kBodyPitch];
+    const T travel = body - q[wheel];
+    const T travel_rate = body_velocity - v[wheel];
+    const AxleForces<T> f = axle_forces(top, ax, travel, travel_rate, body_velocity, v[wheel],
+                                        q[wheel], road, states, rates);
+    force[kBodyHeave] -= f.suspension_N;
+    force[kBodyPitch] -= arm * f.suspension_N;
+    force[wheel] += f.suspension_N + f.tyre_N;
+  };
+  axle(topology_.front, p.front, a1, kFrontWheel, roads.front, internal, internal_rate);
+  const int front_states = topology_.front.internal_state_count();
+  axle(topology_.rear, p.rear, -a2, kRearWheel, roads.rear, internal + front_states,
+       internal_rate + front_states);
+
+  // Seat on the body point at a3, body segments on the seat (or chained).
+  auto mount = [&](const SuspendedMass<T>& m, int top, const T& bottom, const T& bottom_rate,
+                   auto&& apply_to_bottom) {
+    const T tension =
+        m.stiffness_N_per_m * (q[top] - bottom) + m.damping_Ns_per_m * (v[top] - bottom_rate);
+    force[top] -= tension;
+    apply_to_bottom(tension);
+  };
+  mount(p.seat, kSeat, q[kBodyHeave] + a3 * q[kBodyPitch], v[kBodyHeave] + a3 * v[kBodyPitch],
+        [&](const T& tension) {
+          force[kBodyHeave] += tension;
+          force[kBodyPitch] += a3 * tension;
+        });
+  mount(p.lower_body, kLowerBody, q[kSeat], v[kSeat],
+        [&](const T& tension) { force[kSeat] += tension; });
+  const int support = topology_.upper_body_support == UpperBodySupport::kSeat ? kSeat : kLowerBody;
+  mount(p.upper_body, kUpperBody, q[support], v[support],
+        [&](const T& tension) { force[support] += tension; });
+
+  const T mass[kHalfCarDofs] = {
+      p.body_mass_kg, p.pitch_inertia_kg_m2, p.front.unsprung_mass_kg, p.rear.unsprung_mass_kg,
+      p.seat.mass_kg, p.lower_body.mass_kg,  p.upper_body.mass_kg};
+  for (int i = 0; i < kHalfCarDofs; ++i) {
+    xdot[i] = v[i];
+    xdot[kHalfCarDofs + i] = force[i] / mass[i];
+  }
+}
+
+}  // namespace ridefit::model

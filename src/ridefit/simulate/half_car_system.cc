@@ -1,0 +1,89 @@
+#include "ridefit/simulate/half_car_system.h"
+
+#include <fmt/core.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::simulate {
+namespace {
+
+constexpr int kMaxStates = 2 * model::kHalfCarDofs + 4;
+using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
+using AutoDiff = Eigen::AutoDiffScalar<Gradient>;
+
+}  // namespace
+
+AxleRoadInput::AxleRoadInput(const road::RoadInput& road, double rear_delay_s)
+    : road_(road), rear_delay_s_(rear_delay_s) {}
+
+model::AxleRoads AxleRoadInput::at(double time_s) const {
+  model::AxleRoads roads;
+  roads.front = road_.at(time_s);
+  if (time_s >= rear_delay_s_) {
+    roads.rear = road_.at(time_s - rear_delay_s_);
+  } else {
+    roads.rear = {road_.at(0.0).elevation_m, 0.0};
+  }
+  return roads;
+}
+
+double rear_delay_s(const road::RoadInput& road, double wheelbase_m,
+                    std::optional<double> rear_delay_s) {
+  if (rear_delay_s) {
+    if (!(*rear_delay_s >= 0.0) || !std::isfinite(*rear_delay_s)) {
+      throw InputError(fmt::format("rear delay {} s: expected a finite delay >= 0", *rear_delay_s));
+    }
+    return *rear_delay_s;
+  }
+  const auto speed = road.speed_m_per_s();
+  if (!speed) {
+    throw InputError(
+        "this excitation is given over time, not driven at a speed: give the rear wheel's delay "
+        "(--rear-delay S; 0 for a rig that shakes both axles together)");
+  }
+  return wheelbase_m / *speed;
+}
+
+bool HalfCarSystem::derivatives(double t_s, const double* x, double* xdot) const {
+  car_.derivatives(x, roads_.at(t_s), xdot);
+  return std::all_of(xdot, xdot + size(), [](double v) { return std::isfinite(v); });
+}
+
+bool HalfCarSystem::jacobian(double t_s, const double* x, double* jacobian_column_major) const {
+  const int n = size();
+  AutoDiff xa[kMaxStates];
+  AutoDiff fa[kMaxStates];
+  for (int i = 0; i < n; ++i) xa[i] = AutoDiff(x[i], n, i);
+  car_.derivatives(xa, roads_.at(t_s), car_.parameters().cast<AutoDiff>(), fa);
+  for (int row = 0; row < n; ++row) {
+    const Gradient& g = fa[row].derivatives();
+    for (int col = 0; col < n; ++col) {
+      // A constant output may carry an empty derivative vector.
+      const double value = g.size() == n ? g[col] : 0.0;
+      if (!std::isfinite(value)) return false;
+      jacobian_column_major[col * n + row] = value;
+    }
+  }
+  return true;
+}
+
+double HalfCarSystem::typical_magnitude(int state_index) const {
+  // Positions ~1 mm (pitch ~1 mrad), velocities ~10 mm/s; a strut's damper deflection ~0.1 mm,
+  // its friction force judged against Fc.
+  if (state_index < model::kHalfCarDofs) return 1e-3;
+  if (state_index < 2 * model::kHalfCarDofs) return 1e-2;
+  const int internal = state_index - 2 * model::kHalfCarDofs;
+  const int front = car_.topology().front.internal_state_count();
+  const bool is_front = internal < front;
+  const int index = is_front ? internal : internal - front;
+  if (index == 0) return 1e-4;
+  const auto& axle = is_front ? car_.parameters().front : car_.parameters().rear;
+  return std::max(1.0, axle.coulomb_force_N);
+}
+
+}  // namespace ridefit::simulate
