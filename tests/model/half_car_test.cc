@@ -174,9 +174,10 @@ TEST(HalfCarFile, BadFilesAndOverridesNameTheKey) {
             }).find("front.damping_Ns_per_m"),
             std::string::npos);
   const std::string limits = testing::input_error_message([] {
-    ajayi({{"control.law", "skyhook"}});  // needs its limits
+    ajayi({{"control.law", "skyhook"}, {"control.min_damping_Ns_per_m", "5000"}});
   });
-  EXPECT_NE(limits.find("min_damping_Ns_per_m"), std::string::npos) << limits;
+  EXPECT_NE(limits.find("control.min_damping_Ns_per_m"), std::string::npos) << limits;
+  EXPECT_NE(limits.find("c_min <= c_max"), std::string::npos) << limits;
   EXPECT_DOUBLE_EQ(
       ajayi({{"rear.spring_stiffness_N_per_m", "20000"}}).parameters.rear.spring_stiffness_N_per_m,
       20000.0);

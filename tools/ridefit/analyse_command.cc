@@ -237,8 +237,9 @@ io::Figure figure_of(const study::RecordingAnalysis& analysis, const AnalyseFlag
                                 io::SeriesStyle::kLines});
       }
     } else {
-      panel.series.push_back({fmt::format("{} ({:g} % band)", s.name, 100.0 * options.confidence), s.psd.frequency_Hz, s.psd.psd, s.interval.lower,
-                              s.interval.upper, io::SeriesStyle::kLines});
+      panel.series.push_back({fmt::format("{} ({:g} % band)", s.name, 100.0 * options.confidence),
+                              s.psd.frequency_Hz, s.psd.psd, s.interval.lower, s.interval.upper,
+                              io::SeriesStyle::kLines});
     }
     figure.panels.push_back(std::move(panel));
     if (!levels) continue;

@@ -73,16 +73,25 @@ simulate::IntegratorOptions SolverFlags::options() const {
   return options;
 }
 
-std::map<std::string, double> parse_overrides(const std::vector<std::string>& entries) {
-  std::map<std::string, double> overrides;
+std::vector<std::pair<std::string, std::string>> parse_key_values(
+    const std::vector<std::string>& entries) {
+  std::vector<std::pair<std::string, std::string>> pairs;
   for (const auto& entry : entries) {
     const auto eq = entry.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == entry.size()) {
-      throw InputError(
-          fmt::format("--set '{}': expected KEY=NUMBER, e.g. coulomb_force_N=30", entry));
+      throw InputError(fmt::format(
+          "--set '{}': expected KEY=VALUE, e.g. coulomb_force_N=30 or front.damping_Ns_per_m=1500",
+          entry));
     }
-    const std::string key = entry.substr(0, eq);
-    const std::string text = entry.substr(eq + 1);
+    pairs.emplace_back(entry.substr(0, eq), entry.substr(eq + 1));
+  }
+  return pairs;
+}
+
+std::map<std::string, double> parse_overrides(const std::vector<std::string>& entries) {
+  std::map<std::string, double> overrides;
+  for (const auto& [key, text] : parse_key_values(entries)) {
+    const std::string entry = key + "=" + text;
     char* end = nullptr;
     const double value = std::strtod(text.c_str(), &end);
     if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) {

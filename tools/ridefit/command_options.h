@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ridefit/simulate/integrator.h"
@@ -41,6 +42,10 @@ class ProgressReporter {
   bool printed_ = false;
   bool tty_;
 };
+
+// `--set key=value` entries as (key, value text); a malformed entry is an InputError.
+std::vector<std::pair<std::string, std::string>> parse_key_values(
+    const std::vector<std::string>& entries);
 
 // `--set key=value` overrides of numeric model keys; a malformed entry is an InputError.
 std::map<std::string, double> parse_overrides(const std::vector<std::string>& entries);

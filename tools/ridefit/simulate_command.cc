@@ -10,26 +10,17 @@
 #include "command_options.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/input_error.h"
+#include "ridefit/io/model_kind.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
+#include "simulate_flags.h"
 #include "subcommands.h"
 
 namespace ridefit::cli {
 namespace {
-
-struct SimulateFlags {
-  std::string model_file;
-  std::string excitation_file;
-  std::string output_file;
-  std::string damper_state;
-  std::vector<std::string> overrides;
-  double output_rate_Hz = 1000.0;
-  double duration_s = 0.0;
-  bool json = false;
-  SolverFlags solver;
-};
 
 io::CsvTable to_table(const simulate::QuarterCarResponse& r) {
   io::CsvTable table;
@@ -47,6 +38,13 @@ io::CsvTable to_table(const simulate::QuarterCarResponse& r) {
 }
 
 void run(const SimulateFlags& flags) {
+  if (io::model_kind(flags.model_file) == "half_car") {
+    simulate_half_car(flags);
+    return;
+  }
+  if (flags.rear_delay_s >= 0.0) {
+    throw InputError("--rear-delay: a quarter car has one wheel; the flag is for half cars");
+  }
   if (!flags.output_file.empty()) {
     io::check_output_file(flags.output_file, {flags.model_file, flags.excitation_file}, "-o");
   }
@@ -133,6 +131,11 @@ void register_simulate(CLI::App& app) {
   command->add_option("--set", flags->overrides,
                       "Override a model key, e.g. --set coulomb_force_N=30 (repeatable)");
   command->add_flag("--json", flags->json, "Print a JSON summary (solver statistics, RMS values)");
+  command
+      ->add_option("--rear-delay", flags->rear_delay_s,
+                   "Half car on an excitation given over time: the rear wheel's delay [s] (0 for a "
+                   "rig shaking both axles together)")
+      ->check(CLI::Range(0.0, 100.0));
   flags->solver.add_to(*command);
   command->callback([flags] { run(*flags); });
 }

@@ -63,18 +63,21 @@ model::SuspendedMass<double> read_mass(const YamlMap& m) {
           m.non_negative_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m)};
 }
 
+// The limits and gains are required where the law uses them and checked wherever given, so a
+// file can keep them while its law is passive (and a study can switch the law).
 model::SemiActiveControl read_control(const YamlMap& c) {
   model::SemiActiveControl control;
   const std::string law = c.choice("law", {"passive", "skyhook", "groundhook", "hybrid"});
-  if (law == "passive") {
-    c.finish();
-    return control;
-  }
-  control.law = law == "skyhook"      ? model::ControlLaw::kSkyhook
+  control.law = law == "passive"      ? model::ControlLaw::kPassive
+                : law == "skyhook"    ? model::ControlLaw::kSkyhook
                 : law == "groundhook" ? model::ControlLaw::kGroundhook
                                       : model::ControlLaw::kHybrid;
-  control.min_damping_Ns_per_m = c.non_negative_up_to("min_damping_Ns_per_m", kMaxDamping_Ns_per_m);
-  control.max_damping_Ns_per_m = c.positive_up_to("max_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  const bool active = control.law != model::ControlLaw::kPassive;
+  auto read = [&](const char* key, bool required, double& value) {
+    if (required || c.has(key)) value = c.non_negative_up_to(key, kMaxDamping_Ns_per_m);
+  };
+  read("min_damping_Ns_per_m", active, control.min_damping_Ns_per_m);
+  read("max_damping_Ns_per_m", active, control.max_damping_Ns_per_m);
   if (control.min_damping_Ns_per_m > control.max_damping_Ns_per_m) {
     throw InputError(fmt::format(
         "{} is {} Ns/m, above max_damping_Ns_per_m {} Ns/m; a damper's limits need c_min <= "
@@ -82,15 +85,17 @@ model::SemiActiveControl read_control(const YamlMap& c) {
         c.locate("min_damping_Ns_per_m"), control.min_damping_Ns_per_m,
         control.max_damping_Ns_per_m));
   }
-  if (control.law != model::ControlLaw::kGroundhook) {
-    control.skyhook_damping_Ns_per_m =
-        c.non_negative_up_to("skyhook_damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  if (active && !(control.max_damping_Ns_per_m > 0.0)) {
+    throw InputError(
+        fmt::format("{} must be > 0 for a {} damper", c.locate("max_damping_Ns_per_m"), law));
   }
-  if (control.law != model::ControlLaw::kSkyhook) {
-    control.groundhook_damping_Ns_per_m =
-        c.non_negative_up_to("groundhook_damping_Ns_per_m", kMaxDamping_Ns_per_m);
-  }
-  if (control.law == model::ControlLaw::kHybrid) {
+  read("skyhook_damping_Ns_per_m",
+       control.law == model::ControlLaw::kSkyhook || control.law == model::ControlLaw::kHybrid,
+       control.skyhook_damping_Ns_per_m);
+  read("groundhook_damping_Ns_per_m",
+       control.law == model::ControlLaw::kGroundhook || control.law == model::ControlLaw::kHybrid,
+       control.groundhook_damping_Ns_per_m);
+  if (control.law == model::ControlLaw::kHybrid || c.has("skyhook_share")) {
     control.skyhook_share = c.number_in("skyhook_share", 0.0, 1.0);
   }
   c.finish();
