@@ -254,5 +254,24 @@ TEST_F(ExcitationFileTest, EveryRoadTypeHasAPositiveFiniteMaxStep) {
   }
 }
 
+TEST(ExcitationFile, SpeedCanBeReplacedForDrivenRoadsOnly) {
+  const auto road = load_excitation(kExcitations / "smooth_road_seed001.yaml", 80.0 / 3.6);
+  EXPECT_DOUBLE_EQ(road->speed_m_per_s().value(), 80.0 / 3.6);
+  EXPECT_THROW(load_excitation(kExcitations / "sweep_2mm.yaml", 10.0), InputError);
+  EXPECT_THROW(load_excitation(kExcitations / "smooth_road_seed001.yaml", 1e6), InputError);
+}
+
+TEST(ExcitationFile, RandomRoadsGiveTheirSpectrum) {
+  const auto smooth = load_road_spectrum(kExcitations / "smooth_road_seed001.yaml");
+  ASSERT_TRUE(smooth.has_value());
+  EXPECT_DOUBLE_EQ(smooth->spectrum.psd_m3(1.0), 4.8e-7);  // Cr at 1 cycle/m
+  EXPECT_DOUBLE_EQ(smooth->speed_m_per_s, 20.0 / 3.6);
+  const auto fast = load_road_spectrum(kExcitations / "iso8608_class_a_50kmh.yaml", 30.0);
+  ASSERT_TRUE(fast.has_value());
+  EXPECT_DOUBLE_EQ(fast->spectrum.psd_m3(0.1), 16e-6);
+  EXPECT_DOUBLE_EQ(fast->speed_m_per_s, 30.0);
+  EXPECT_FALSE(load_road_spectrum(kExcitations / "cleat_semicircular_20mm.yaml").has_value());
+}
+
 }  // namespace
 }  // namespace ridefit::road

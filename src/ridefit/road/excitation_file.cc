@@ -130,26 +130,101 @@ std::unique_ptr<RoadInput> read_measured(const io::YamlMap& file) {
 
 }  // namespace
 
-std::unique_ptr<RoadInput> load_excitation(const std::filesystem::path& yaml_file) {
-  const io::YamlMap file = io::YamlMap::load(yaml_file);
-  using Reader = std::unique_ptr<RoadInput> (*)(const io::YamlMap&);
+namespace {
+
+using Reader = std::unique_ptr<RoadInput> (*)(const io::YamlMap&);
+
+const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> kReaders{
       {"log_sweep", read_log_sweep}, {"iso8608", read_iso8608}, {"power_law", read_power_law},
       {"cleat", read_cleat},         {"profile", read_profile}, {"measured", read_measured}};
+  return kReaders;
+}
+
+std::string read_type(const io::YamlMap& file) {
   std::set<std::string> types;
-  for (const auto& entry : kReaders) types.insert(entry.first);
-  const Reader read = kReaders.at(file.choice("type", types));
+  for (const auto& entry : readers()) types.insert(entry.first);
+  return file.choice("type", types);
+}
+
+// Runs `read` on the file; the parameter structs' own checks name the key ("key 'x' is …") but
+// cannot know the file, so their messages gain it (YamlMap and CsvTable messages have it).
+template <class Read>
+auto naming_the_file(const std::filesystem::path& yaml_file, Read&& read) {
   try {
-    return read(file);
+    return read();
   } catch (const InputError& e) {
-    // The parameter structs' own checks name the key ("key 'x' is …") but cannot know the
-    // file; YamlMap and CsvTable messages already start with their file.
     const std::string message = e.what();
     if (message.starts_with("key")) {
       throw InputError(fmt::format("{}: {}", yaml_file.string(), message));
     }
     throw;
   }
+}
+
+// The file's mapping with its speed replaced by `speed_m_per_s`.
+io::YamlMap with_speed(const std::filesystem::path& yaml_file, double speed_m_per_s) {
+  const io::YamlMap checked = io::YamlMap::load(yaml_file);
+  if (!checked.has("speed_m_per_s") && !checked.has("speed_km_per_h")) {
+    throw InputError(fmt::format(
+        "{}: this excitation is not driven at a speed (no speed_m_per_s or speed_km_per_h), so "
+        "a speed of {:.4g} km/h cannot be applied to it",
+        yaml_file.string(), speed_m_per_s * 3.6));
+  }
+  YAML::Node root = YAML::Clone(YAML::LoadFile(yaml_file.string()));
+  root.remove("speed_km_per_h");
+  root["speed_m_per_s"] = speed_m_per_s;
+  return io::YamlMap(root, yaml_file, "");
+}
+
+std::unique_ptr<RoadInput> read_excitation(const io::YamlMap& file) {
+  const Reader read = readers().at(read_type(file));
+  return naming_the_file(file.path(), [&] { return read(file); });
+}
+
+std::optional<RoadSpectrum> read_spectrum(const io::YamlMap& file) {
+  const std::string type = read_type(file);
+  if (type != "iso8608" && type != "power_law") return std::nullopt;
+  return naming_the_file(file.path(), [&] {
+    RoadSpectrum result;
+    if (type == "iso8608") {
+      result.spectrum = iso8608_spectrum(
+          parse_iso8608_class(file.choice("class", {"A", "B", "C", "D", "E", "F", "G", "H"})));
+    } else {
+      PowerLawRoadParameters p;
+      p.roughness_coefficient_m3 = file.positive("roughness_coefficient_m3");
+      p.waviness = file.number("waviness");
+      result.spectrum = p.spectrum();
+    }
+    const RandomRoadParameters random = read_random(file);
+    file.finish();
+    result.band = random.band;
+    result.speed_m_per_s = random.speed_m_per_s;
+    result.duration_s = random.duration_s;
+    return std::optional<RoadSpectrum>(result);
+  });
+}
+
+}  // namespace
+
+std::unique_ptr<RoadInput> load_excitation(const std::filesystem::path& yaml_file) {
+  return read_excitation(io::YamlMap::load(yaml_file));
+}
+
+std::unique_ptr<RoadInput> load_excitation(const std::filesystem::path& yaml_file,
+                                           double speed_m_per_s) {
+  return read_excitation(with_speed(yaml_file, speed_m_per_s));
+}
+
+std::optional<RoadSpectrum> load_road_spectrum(const std::filesystem::path& yaml_file,
+                                               std::optional<double> speed_m_per_s) {
+  // The full road is read first, so a spectrum is only ever given for a valid file.
+  if (speed_m_per_s) {
+    load_excitation(yaml_file, *speed_m_per_s);
+    return read_spectrum(with_speed(yaml_file, *speed_m_per_s));
+  }
+  load_excitation(yaml_file);
+  return read_spectrum(io::YamlMap::load(yaml_file));
 }
 
 }  // namespace ridefit::road

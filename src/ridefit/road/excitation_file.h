@@ -2,7 +2,10 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
+#include "ridefit/road/power_law_spectrum.h"
+#include "ridefit/road/random_profile.h"
 #include "ridefit/road/road_input.h"
 
 namespace ridefit::road {
@@ -53,5 +56,22 @@ namespace ridefit::road {
 // of road_limits.h apply: speed <= 150 m/s (540 km/h), sweep frequencies <= 500 Hz, at most
 // 2e7 road samples (or steps of max_step_s()) per run, runs of at least 1 ms.
 std::unique_ptr<RoadInput> load_excitation(const std::filesystem::path& yaml_file);
+
+// The same excitation driven at another speed (a study's speed axis). InputError for an
+// excitation that is not driven at a speed (log_sweep, measured).
+std::unique_ptr<RoadInput> load_excitation(const std::filesystem::path& yaml_file,
+                                           double speed_m_per_s);
+
+// The spatial spectrum of a random road excitation (iso8608, power_law) with its band, speed
+// (the file's, or `speed_m_per_s`) and duration: what a frequency-domain evaluation needs.
+// Empty for other types. The file is fully checked first (as load_excitation does).
+struct RoadSpectrum {
+  PowerLawSpectrum spectrum;
+  SpatialBand band;
+  double speed_m_per_s = 0.0;
+  double duration_s = 0.0;
+};
+std::optional<RoadSpectrum> load_road_spectrum(const std::filesystem::path& yaml_file,
+                                               std::optional<double> speed_m_per_s = {});
 
 }  // namespace ridefit::road

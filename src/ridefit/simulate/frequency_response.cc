@@ -1,0 +1,44 @@
+#include "ridefit/simulate/frequency_response.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <numbers>
+#include <stdexcept>
+
+namespace ridefit::simulate {
+
+FrequencyResponse::FrequencyResponse(const LinearStateSpace& system) : system_(system) {
+  const auto n = system.A.rows();
+  if (system.A.cols() != n || system.B.rows() != n || system.C.cols() != n ||
+      system.D.rows() != system.C.rows() || system.D.cols() != system.B.cols()) {
+    throw std::invalid_argument("FrequencyResponse: A, B, C, D have inconsistent sizes");
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(system.A);
+  if (eigen.info() != Eigen::Success) return;  // the LU path still works
+  const Eigen::MatrixXcd v = eigen.eigenvectors();
+  const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(v);
+  const auto& s = svd.singularValues();
+  if (!(s(s.size() - 1) > 0.0) || s(0) / s(s.size() - 1) > 1e8) return;
+  eigenvalues_ = eigen.eigenvalues();
+  output_modes_ = system.C.cast<std::complex<double>>() * v;
+  modal_inputs_ = v.partialPivLu().solve(system.B.cast<std::complex<double>>());
+  eigenbasis_ = true;
+}
+
+Eigen::MatrixXcd FrequencyResponse::at(double frequency_Hz) const {
+  const std::complex<double> s(0.0, 2.0 * std::numbers::pi * frequency_Hz);
+  if (eigenbasis_) {
+    const Eigen::VectorXcd resolvent = (s - eigenvalues_.array()).inverse().matrix();
+    return output_modes_ * resolvent.asDiagonal() * modal_inputs_ +
+           system_.D.cast<std::complex<double>>();
+  }
+  const auto n = system_.A.rows();
+  const Eigen::MatrixXcd shifted =
+      s * Eigen::MatrixXcd::Identity(n, n) - system_.A.cast<std::complex<double>>();
+  return system_.C.cast<std::complex<double>>() *
+             shifted.partialPivLu().solve(system_.B.cast<std::complex<double>>()) +
+         system_.D.cast<std::complex<double>>();
+}
+
+}  // namespace ridefit::simulate
