@@ -10,12 +10,14 @@ void register_modes(CLI::App& app);
 void register_simulate(CLI::App& app);
 void register_friction_study(CLI::App& app);
 void register_analyse(CLI::App& app);
+void register_sweep(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
   register_simulate(app);
   register_friction_study(app);
   register_analyse(app);
+  register_sweep(app);
 }
 
 }  // namespace ridefit::cli

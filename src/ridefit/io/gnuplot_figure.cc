@@ -88,7 +88,11 @@ std::string range(const std::optional<std::pair<double, double>>& r) {
 
 void write_panel(std::ostream& out, const PlotPanel& panel, std::size_t p) {
   out << "reset\n";  // a panel does not inherit the previous one's axes
-  out << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\nset key top right opaque font ',9'\n";
+  out << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\n";
+  // The position is one of gnuplot's own word pairs, never user text.
+  const bool known_position =
+      panel.key_position.find_first_not_of("abcdeghilmnoprtu ") == std::string::npos;
+  out << "set key " << (known_position ? panel.key_position : "top right") << " opaque font ',9'\n";
   out << "set title " << gnuplot_quote(panel.title) << "\n";
   out << "set xlabel " << gnuplot_quote(panel.x_label) << "\n";
   out << "set ylabel " << gnuplot_quote(panel.y_label) << "\n";
@@ -217,6 +221,7 @@ PlotPanel time_panel(std::string title, std::string y_label) {
 
 PlotPanel xy_panel(std::string title, std::string x_label, std::string y_label) {
   PlotPanel panel;
+  panel.key_position = "top left";  // curves of a study mostly rise to the right
   panel.title = std::move(title);
   panel.x_label = std::move(x_label);
   panel.y_label = std::move(y_label);

@@ -31,6 +31,7 @@ struct PlotPanel {
   std::optional<std::pair<double, double>> x_range;  // unset: gnuplot's autoscale
   std::optional<std::pair<double, double>> y_range;
   std::vector<PlotSeries> series;
+  std::string key_position = "top right";  // gnuplot's words: top left, bottom right, …
 };
 
 // Panels in a grid of `columns` (0: all in one row up to three, then three per row).

@@ -193,6 +193,75 @@ YamlMap YamlMap::map(const std::string& key) const {
   return YamlMap(value, path_, where_.empty() ? key : where_ + "." + key);
 }
 
+std::vector<double> YamlMap::numbers(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (!value.IsSequence() || value.size() == 0) {
+    throw InputError(fmt::format("{} must be a non-empty list of numbers, e.g. [20, 40, 60]",
+                                 locate(key)));
+  }
+  std::vector<double> result;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const YAML::Node item = value[i];
+    double v = 0.0;
+    try {
+      if (!item.IsScalar()) throw YAML::Exception(item.Mark(), "not a scalar");
+      v = item.as<double>();
+    } catch (const YAML::Exception&) {
+      throw InputError(fmt::format("{}: item {} is not a number", locate(key), i + 1));
+    }
+    if (!std::isfinite(v)) {
+      throw InputError(fmt::format("{}: item {} is {}, expected a finite number", locate(key),
+                                   i + 1, item.Scalar()));
+    }
+    result.push_back(v);
+  }
+  return result;
+}
+
+std::vector<std::string> YamlMap::texts(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (value.IsScalar()) return {value.Scalar()};
+  if (!value.IsSequence() || value.size() == 0) {
+    throw InputError(fmt::format("{} must be a text or a non-empty list of texts", locate(key)));
+  }
+  std::vector<std::string> result;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    if (!value[i].IsScalar()) {
+      throw InputError(fmt::format("{}: item {} is not a text", locate(key), i + 1));
+    }
+    result.push_back(value[i].Scalar());
+  }
+  return result;
+}
+
+std::vector<YamlMap> YamlMap::maps(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (!value.IsSequence() || value.size() == 0) {
+    throw InputError(
+        fmt::format("{} must be a non-empty list of `- key: value` entries", locate(key)));
+  }
+  std::vector<YamlMap> result;
+  const std::string base = where_.empty() ? key : where_ + "." + key;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string where = fmt::format("{}[{}]", base, i + 1);
+    if (!value[i].IsMap()) {
+      throw InputError(fmt::format("{}: key '{}' must be a mapping of `key: value` entries",
+                                   path_.string(), where));
+    }
+    result.emplace_back(value[i], path_, where);
+  }
+  return result;
+}
+
+std::vector<std::string> YamlMap::keys() const {
+  std::vector<std::string> result;
+  for (const auto& entry : node_) {
+    result.push_back(entry.first.Scalar());
+    used_.insert(result.back());
+  }
+  return result;
+}
+
 std::filesystem::path YamlMap::file(const std::string& key) const {
   std::filesystem::path p = text(key);
   if (p.is_relative()) p = path_.parent_path() / p;

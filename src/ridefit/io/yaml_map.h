@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace ridefit::io {
 
@@ -42,6 +43,14 @@ class YamlMap {
   std::string choice(const std::string& key, const std::set<std::string>& choices) const;
   // A nested mapping.
   YamlMap map(const std::string& key) const;
+  // A non-empty list of finite numbers, e.g. `speeds_km_per_h: [20, 40]`.
+  std::vector<double> numbers(const std::string& key) const;
+  // A string, or a non-empty list of strings.
+  std::vector<std::string> texts(const std::string& key) const;
+  // A non-empty list of mappings, each wrapped for strict reading as "key[i]".
+  std::vector<YamlMap> maps(const std::string& key) const;
+  // The keys of a mapping in file order (e.g. names under `roads:`), all marked as read.
+  std::vector<std::string> keys() const;
   // A path read relative to the directory of this file.
   std::filesystem::path file(const std::string& key) const;
 

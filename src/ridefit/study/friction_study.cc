@@ -1,11 +1,7 @@
 #include "ridefit/study/friction_study.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
-#include <mutex>
-#include <thread>
 
 #include "ridefit/comfort/vibration_metrics.h"
 #include "ridefit/comfort/weighting_filter.h"
@@ -13,6 +9,7 @@
 #include "ridefit/signal/spectrum_peak.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"
+#include "ridefit/study/parallel_for.h"
 
 namespace ridefit::study {
 namespace {
@@ -71,32 +68,15 @@ FrictionStudyResult run_friction_study(const model::QuarterCarParameters<double>
   FrictionStudyResult result;
   result.cases.resize(count);
   std::vector<std::vector<double>> frequencies(count);
-  std::atomic<std::size_t> next{0};
-  std::mutex mutex;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
-      try {
+  parallel_for(
+      count, options.threads,
+      [&](std::size_t i) {
         result.cases[i] =
             run_case(parameters, options.coulomb_forces_N[i], road, options, frequencies[i]);
-        if (progress) {
-          const std::lock_guard<std::mutex> lock(mutex);
-          progress(result.cases[i]);
-        }
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-      }
-    }
-  };
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned threads = static_cast<unsigned>(
-      std::min<std::size_t>(options.threads ? options.threads : cores, count));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& thread : pool) thread.join();
-  if (failure) std::rethrow_exception(failure);
+      },
+      [&](std::size_t i) {
+        if (progress) progress(result.cases[i]);
+      });
   if (count > 0) result.frequency_Hz = frequencies.front();
   return result;
 }
