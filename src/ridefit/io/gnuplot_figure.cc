@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -90,8 +91,11 @@ void write_panel(std::ostream& out, const PlotPanel& panel, std::size_t p) {
   out << "reset\n";  // a panel does not inherit the previous one's axes
   out << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\n";
   // The position is one of gnuplot's own word pairs, never user text.
-  const bool known_position =
-      panel.key_position.find_first_not_of("abcdeghilmnoprtu ") == std::string::npos;
+  static const std::set<std::string> kWords = {"top",    "bottom",  "left",  "right", "center",
+                                               "inside", "outside", "above", "below"};
+  std::stringstream words(panel.key_position);
+  bool known_position = true;
+  for (std::string word; words >> word;) known_position = known_position && kWords.count(word);
   out << "set key " << (known_position ? panel.key_position : "top right") << " opaque font ',9'\n";
   out << "set title " << gnuplot_quote(panel.title) << "\n";
   out << "set xlabel " << gnuplot_quote(panel.x_label) << "\n";
