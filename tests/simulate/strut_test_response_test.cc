@@ -1,0 +1,128 @@
+// The strut-test solver: its forces against CVODE on the same equations, and its derivatives
+// against central differences of itself.
+#include "ridefit/simulate/strut_test_response.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <unsupported/Eigen/AutoDiff>
+#include <vector>
+
+#include "ridefit/simulate/integrator.h"
+#include "ridefit/simulate/ode_system.h"
+
+namespace ridefit::simulate {
+namespace {
+
+model::StrutTestParameters<double> passat_strut() {
+  // seed 000's Passat strut: σ0 5e6 N/m, Fc 60 N, d 1, top mount 488 N/mm, c 887 Ns/m.
+  return {5e6, 60.0, 1.0, 488000.0, 887.0, 150.0, 2000.0, -3.0};
+}
+
+double displacement(double t) { return 0.003 * std::sin(2.0 * std::numbers::pi * 1.0 * t); }
+
+class StrutTestOde : public OdeSystem {
+ public:
+  explicit StrutTestOde(const model::StrutTestParameters<double>& p) : p_(p) {}
+  int size() const override { return 2; }
+  double max_step_s() const override { return 0.0; }
+  bool derivatives(double t, const double* y, double* ydot) const override {
+    model::StrutTest::derivatives(y, displacement(t), p_, ydot);
+    return true;
+  }
+  bool jacobian(double t, const double* y, double* j) const override {
+    using AD = Eigen::AutoDiffScalar<Eigen::Vector2d>;
+    AD ya[2] = {AD(y[0], 2, 0), AD(y[1], 2, 1)};
+    AD f[2];
+    const model::StrutTestParameters<AD> p{
+        AD(p_.dahl_sigma0_N_per_m),         AD(p_.coulomb_force_N),  AD(p_.dahl_exponent),
+        AD(p_.top_mount_stiffness_N_per_m), AD(p_.damping_Ns_per_m), AD(p_.gas_force_N),
+        AD(p_.gas_stiffness_N_per_m),       AD(p_.force_offset_N)};
+    model::StrutTest::derivatives(ya, AD(displacement(t)), p, f);
+    for (int row = 0; row < 2; ++row) {
+      for (int col = 0; col < 2; ++col) {
+        j[col * 2 + row] = f[row].derivatives().size() == 2 ? f[row].derivatives()[col] : 0.0;
+      }
+    }
+    return true;
+  }
+  double typical_magnitude(int i) const override { return i == 0 ? 1e-6 : 1.0; }
+
+ private:
+  model::StrutTestParameters<double> p_;
+};
+
+TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
+  const auto p = passat_strut();
+  std::vector<double> t, x;
+  for (int k = 0; k <= 3000; ++k) {  // 3 cycles at 1 kHz
+    t.push_back(k * 1e-3);
+    x.push_back(displacement(t.back()));
+  }
+  IntegratorOptions options;
+  options.relative_tolerance = 1e-9;
+  const Trajectory reference = integrate(StrutTestOde(p), {x[0], 0.0}, t, options);
+  const auto force = strut_test_force<double>(t, x, p, p);
+  ASSERT_TRUE(force.has_value());
+  double worst = 0.0;
+  for (std::size_t k = 1000; k < t.size(); ++k) {  // after the first cycle
+    const double expected = model::StrutTest::force_N(reference.state_at(k), x[k], p);
+    worst = std::max(worst, std::abs((*force)[k] - expected));
+  }
+  // Backward Euler, 4 substeps of 0.25 ms: within 2 % of Fc everywhere on the loop.
+  EXPECT_LT(worst, 0.02 * p.coulomb_force_N) << worst;
+  // Finer substeps converge (first order).
+  StrutTestSolverOptions fine;
+  fine.substeps = 16;
+  const auto finer = strut_test_force<double>(t, x, p, p, fine);
+  double worst_fine = 0.0;
+  for (std::size_t k = 1000; k < t.size(); ++k) {
+    const double expected = model::StrutTest::force_N(reference.state_at(k), x[k], p);
+    worst_fine = std::max(worst_fine, std::abs((*finer)[k] - expected));
+  }
+  EXPECT_LT(worst_fine, 0.4 * worst);
+}
+
+// d(force)/d(parameters) through the implicit steps equals central differences of the same
+// discrete scheme.
+TEST(StrutTestResponse, DerivativesMatchCentralDifferences) {
+  using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 5, 1>>;
+  const auto p = passat_strut();
+  std::vector<double> t, x;
+  for (int k = 0; k <= 600; ++k) {
+    t.push_back(k * 2e-3);
+    x.push_back(displacement(t.back()));
+  }
+  const model::StrutTestParameters<AD> pa{
+      AD(p.dahl_sigma0_N_per_m, 5, 0), AD(p.coulomb_force_N, 5, 1),
+      AD(p.dahl_exponent, 5, 2),       AD(p.top_mount_stiffness_N_per_m, 5, 3),
+      AD(p.damping_Ns_per_m, 5, 4),    AD(p.gas_force_N),
+      AD(p.gas_stiffness_N_per_m),     AD(p.force_offset_N)};
+  const auto jets = strut_test_force<AD>(t, x, pa, p);
+  ASSERT_TRUE(jets.has_value());
+  for (int j = 0; j < 5; ++j) {
+    auto plus = p, minus = p;
+    double* values_plus[5] = {&plus.dahl_sigma0_N_per_m, &plus.coulomb_force_N, &plus.dahl_exponent,
+                              &plus.top_mount_stiffness_N_per_m, &plus.damping_Ns_per_m};
+    double* values_minus[5] = {&minus.dahl_sigma0_N_per_m, &minus.coulomb_force_N,
+                               &minus.dahl_exponent, &minus.top_mount_stiffness_N_per_m,
+                               &minus.damping_Ns_per_m};
+    const double step = 1e-6 * *values_plus[j];
+    *values_plus[j] += step;
+    *values_minus[j] -= step;
+    const auto up = strut_test_force<double>(t, x, plus, plus);
+    const auto down = strut_test_force<double>(t, x, minus, minus);
+    double scale = 0.0, worst = 0.0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      const double fd = ((*up)[k] - (*down)[k]) / (2.0 * step);
+      const double exact = (*jets)[k].derivatives().size() == 5 ? (*jets)[k].derivatives()[j] : 0.0;
+      scale = std::max(scale, std::abs(exact));
+      worst = std::max(worst, std::abs(fd - exact));
+    }
+    EXPECT_LT(worst, 1e-5 * scale) << "parameter " << j;
+  }
+}
+
+}  // namespace
+}  // namespace ridefit::simulate
