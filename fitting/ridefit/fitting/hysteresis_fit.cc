@@ -1,0 +1,302 @@
+#include "ridefit/fitting/hysteresis_fit.h"
+
+#include <ceres/ceres.h>
+#include <fmt/core.h>
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <set>
+
+#include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::fitting {
+namespace {
+
+inline double value_of(double x) { return x; }
+template <int N>
+double value_of(const ceres::Jet<double, N>& x) {
+  return x.a;
+}
+
+// One free value (a parameter block of size 1): which parameter, and which record it belongs
+// to (-1: shared by all).
+struct Block {
+  std::size_t parameter = 0;
+  int record = -1;
+};
+
+// The force residuals of one record, as a function of the blocks it uses.
+struct RecordResidual {
+  const HysteresisRecord* record = nullptr;
+  model::StrutTestParameters<double> base;
+  std::vector<std::size_t> fields;  // the parameter of each of this record's blocks
+  simulate::StrutTestSolverOptions solver;
+
+  template <typename T>
+  bool operator()(T const* const* blocks, T* residuals) const {
+    model::StrutTestParameters<T> p;
+    model::StrutTestParameters<double> v = base;
+    for (std::size_t i = 0; i < kStrutParameters.size(); ++i) {
+      strut_parameter(p, i) = T(strut_parameter(v, i));
+    }
+    for (std::size_t b = 0; b < fields.size(); ++b) {
+      strut_parameter(p, fields[b]) = blocks[b][0];
+      strut_parameter(v, fields[b]) = value_of(blocks[b][0]);
+    }
+    const auto force =
+        simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v, solver);
+    if (!force) return false;
+    for (std::size_t k = 0; k < force->size(); ++k) {
+      residuals[k] = (*force)[k] - T(record->force_N[k]);
+    }
+    return true;
+  }
+};
+
+constexpr int kStride = 8;
+
+std::string describe(const Block& block, const std::vector<HysteresisRecord>& records) {
+  const std::string name(kStrutParameters[block.parameter].name);
+  return block.record < 0
+             ? name
+             : name + " (" + records[static_cast<std::size_t>(block.record)].source + ")";
+}
+
+}  // namespace
+
+HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
+                                   const model::StrutTestParameters<double>& start,
+                                   const HysteresisFitOptions& options) {
+  if (records.empty()) throw InputError("fit: no data file given");
+  if (options.free.empty()) {
+    throw InputError("--free: name at least one parameter to fit, e.g. coulomb_force_N");
+  }
+  std::set<std::size_t> free;
+  for (const auto& name : options.free) {
+    if (!free.insert(strut_parameter_index(name)).second) {
+      throw InputError(fmt::format("--free: '{}' is given twice", name));
+    }
+  }
+  std::set<std::size_t> per_file;
+  for (const auto& name : options.per_file) {
+    const std::size_t index = strut_parameter_index(name);
+    if (!free.count(index)) {
+      throw InputError(fmt::format("--per-file: '{}' is not among the free parameters", name));
+    }
+    per_file.insert(index);
+  }
+  std::array<std::pair<double, double>, kStrutParameters.size()> bounds;
+  for (std::size_t i = 0; i < kStrutParameters.size(); ++i) {
+    bounds[i] = {kStrutParameters[i].lower, kStrutParameters[i].upper};
+  }
+  for (const auto& [name, bound] : options.bounds) {
+    const std::size_t index = strut_parameter_index(name);
+    if (!(bound.first < bound.second) || !std::isfinite(bound.first) ||
+        !std::isfinite(bound.second)) {
+      throw InputError(fmt::format("bounds of {}: lower {} must be below upper {}, both finite",
+                                   name, bound.first, bound.second));
+    }
+    bounds[index] = bound;
+  }
+  model::StrutTestParameters<double> base = start;
+  for (std::size_t index : free) {
+    const double v = strut_parameter(base, index);
+    if (!(v >= bounds[index].first && v <= bounds[index].second)) {
+      throw InputError(fmt::format(
+          "the start value of {} is {}, outside its bounds [{}, {}]; set it in the model file or "
+          "widen the bounds",
+          kStrutParameters[index].name, v, bounds[index].first, bounds[index].second));
+    }
+  }
+
+  // Blocks: shared parameters first, then each file's own.
+  std::vector<Block> blocks;
+  for (std::size_t index : free) {
+    if (!per_file.count(index)) blocks.push_back({index, -1});
+  }
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    for (std::size_t index : per_file) blocks.push_back({index, static_cast<int>(r)});
+  }
+  std::vector<double> values(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b)
+    values[b] = strut_parameter(base, blocks[b].parameter);
+
+  ceres::Problem problem;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    auto* functor = new RecordResidual{&records[r], base, {}, options.solver};
+    std::vector<double*> used;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      if (blocks[b].record < 0 || blocks[b].record == static_cast<int>(r)) {
+        functor->fields.push_back(blocks[b].parameter);
+        used.push_back(&values[b]);
+      }
+    }
+    auto* cost = new ceres::DynamicAutoDiffCostFunction<RecordResidual, kStride>(functor);
+    for (std::size_t i = 0; i < used.size(); ++i) cost->AddParameterBlock(1);
+    cost->SetNumResiduals(static_cast<int>(records[r].force_N.size()));
+    ceres::LossFunction* loss = nullptr;
+    if (options.loss == "huber") loss = new ceres::HuberLoss(options.loss_scale_N);
+    if (options.loss == "cauchy") loss = new ceres::CauchyLoss(options.loss_scale_N);
+    problem.AddResidualBlock(cost, loss, used);
+  }
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    problem.SetParameterLowerBound(&values[b], 0, bounds[blocks[b].parameter].first);
+    problem.SetParameterUpperBound(&values[b], 0, bounds[blocks[b].parameter].second);
+  }
+
+  double initial_cost = 0.0;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &initial_cost, nullptr, nullptr,
+                        nullptr)) {
+    throw RunError(
+        "fit: the strut model cannot be solved at the start values (a Newton step failed); "
+        "check the model file's values");
+  }
+
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::DENSE_QR;
+  solver.max_num_iterations = options.max_iterations;
+  solver.function_tolerance = 1e-12;
+  solver.gradient_tolerance = 1e-14;
+  solver.parameter_tolerance = 1e-10;
+  solver.num_threads = 2;
+  solver.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+
+  HysteresisFitResult result;
+  result.initial_cost = initial_cost;
+  result.final_cost = summary.final_cost;
+  result.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  result.converged = summary.termination_type == ceres::CONVERGENCE;
+  result.termination = summary.message;
+  std::size_t samples = 0;
+  for (const auto& r : records) samples += r.force_N.size();
+  result.residual_rms_N = std::sqrt(2.0 * summary.final_cost / static_cast<double>(samples));
+
+  // Identifiability: the Jacobian with each column scaled by its parameter's size.
+  ceres::CRSMatrix crs;
+  double cost = 0.0;
+  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs);
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int row = 0; row < crs.num_rows; ++row) {
+    for (int k = crs.rows[static_cast<std::size_t>(row)];
+         k < crs.rows[static_cast<std::size_t>(row) + 1]; ++k) {
+      jacobian(row, crs.cols[static_cast<std::size_t>(k)]) =
+          crs.values[static_cast<std::size_t>(k)];
+    }
+  }
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const auto [lo, hi] = bounds[blocks[b].parameter];
+    const double scale = std::max(std::abs(values[b]), 1e-3 * (hi - lo));
+    jacobian.col(static_cast<Eigen::Index>(b)) *= scale;
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeThinV);
+  const auto& sigma = svd.singularValues();
+
+  std::set<std::size_t> weak;
+  for (Eigen::Index i = 0; i < sigma.size(); ++i) {
+    if (sigma(i) < 1e-6 * sigma(0)) {
+      for (Eigen::Index j = 0; j < svd.matrixV().rows(); ++j) {
+        if (std::abs(svd.matrixV()(j, i)) > 0.3) weak.insert(static_cast<std::size_t>(j));
+      }
+    }
+  }
+  // Standard errors and correlation from ceres::Covariance, scaled by s².
+  const std::size_t n = blocks.size();
+  const double dof = static_cast<double>(samples) - static_cast<double>(n);
+  const double s2 = dof > 0.0 ? 2.0 * summary.final_cost / dof : 0.0;
+  ceres::Covariance::Options covariance_options;
+  covariance_options.algorithm_type = ceres::DENSE_SVD;
+  covariance_options.num_threads = 2;
+  ceres::Covariance covariance(covariance_options);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a; b < n; ++b) pairs.emplace_back(&values[a], &values[b]);
+  }
+  Eigen::MatrixXd cov =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  const bool have_covariance = weak.empty() && dof > 0.0 && covariance.Compute(pairs, &problem);
+  // (a Jacobian with a near-null direction has no finite covariance: those parameters are
+  // reported as undetermined below instead)
+  if (have_covariance) {
+    for (std::size_t a = 0; a < n; ++a) {
+      for (std::size_t b = a; b < n; ++b) {
+        double c = 0.0;
+        covariance.GetCovarianceBlock(&values[a], &values[b], &c);
+        cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = s2 * c;
+        cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = s2 * c;
+      }
+    }
+    result.correlation = cov;
+    for (Eigen::Index a = 0; a < cov.rows(); ++a) {
+      for (Eigen::Index b = 0; b < cov.cols(); ++b) {
+        result.correlation(a, b) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
+      }
+    }
+  }
+  // A parameter the data leave undetermined: in a near-null direction of the Jacobian, with a
+  // standard error above half its size, or correlated beyond 0.95 with another (the data then
+  // fix only a combination of the two, e.g. damping and friction on a quasi-static triangle).
+  std::vector<std::string> pairs_note;
+  if (have_covariance) {
+    for (std::size_t b = 0; b < n; ++b) {
+      const auto [lo, hi] = bounds[blocks[b].parameter];
+      const double size = std::max(std::abs(values[b]), 1e-3 * (hi - lo));
+      const auto i = static_cast<Eigen::Index>(b);
+      if (std::sqrt(cov(i, i)) > 0.5 * size) weak.insert(b);
+      for (std::size_t c = b + 1; c < n; ++c) {
+        const auto j = static_cast<Eigen::Index>(c);
+        if (std::abs(result.correlation(i, j)) > 0.95) {
+          weak.insert(b);
+          weak.insert(c);
+          pairs_note.push_back(fmt::format("{} and {} (correlation {:.3f})",
+                                           describe(blocks[b], records),
+                                           describe(blocks[c], records), result.correlation(i, j)));
+        }
+      }
+    }
+  }
+  for (std::size_t b : weak) result.unidentifiable.push_back(describe(blocks[b], records));
+  if (!weak.empty()) {
+    std::string list;
+    for (const auto& name : result.unidentifiable) list += (list.empty() ? "" : ", ") + name;
+    result.identifiability_note = fmt::format(
+        "the data cannot determine {}{}{} (condition number of the scaled Jacobian {:.2g}): fix "
+        "{} or add a test that excites {}",
+        list, pairs_note.empty() ? "" : "; they cannot separate ",
+        [&] {
+          std::string text;
+          for (const auto& p : pairs_note) text += (text.empty() ? "" : ", ") + p;
+          return text;
+        }(),
+        sigma(0) / std::max(sigma(sigma.size() - 1), 1e-300),
+        weak.size() > 1 ? "some of them" : "it", weak.size() > 1 ? "them" : "it");
+  }
+  for (std::size_t b = 0; b < n; ++b) {
+    FittedParameter p;
+    p.name = std::string(kStrutParameters[blocks[b].parameter].name);
+    if (blocks[b].record >= 0) p.file = records[static_cast<std::size_t>(blocks[b].record)].source;
+    p.value = values[b];
+    if (have_covariance)
+      p.standard_error = std::sqrt(cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(b)));
+    result.parameters.push_back(p);
+  }
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    model::StrutTestParameters<double> fitted = base;
+    for (std::size_t b = 0; b < n; ++b) {
+      if (blocks[b].record < 0 || blocks[b].record == static_cast<int>(r)) {
+        strut_parameter(fitted, blocks[b].parameter) = values[b];
+      }
+    }
+    result.fitted.push_back(fitted);
+    const auto force = simulate::strut_test_force<double>(
+        records[r].time_s, records[r].displacement_m, fitted, fitted, options.solver);
+    result.fitted_force_N.push_back(force ? *force : std::vector<double>());
+  }
+  return result;
+}
+
+}  // namespace ridefit::fitting

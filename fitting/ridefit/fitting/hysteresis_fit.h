@@ -1,0 +1,62 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ridefit/fitting/hysteresis_record.h"
+#include "ridefit/model/strut_test.h"
+#include "ridefit/simulate/strut_test_response.h"
+
+namespace ridefit::fitting {
+
+struct HysteresisFitOptions {
+  std::vector<std::string> free;      // parameters to fit (names of kStrutParameters)
+  std::vector<std::string> per_file;  // of those, the ones each file gets its own value of
+  std::map<std::string, std::pair<double, double>> bounds;  // overrides of the defaults
+  std::string loss = "none";  // none | huber | cauchy (robust against outlying samples)
+  double loss_scale_N = 5.0;  // where the robust loss starts to discount a residual
+  int max_iterations = 100;
+  simulate::StrutTestSolverOptions solver;
+};
+
+struct FittedParameter {
+  std::string name;
+  std::string file;  // the file it belongs to (per-file parameters), else empty
+  double value = 0.0;
+  std::optional<double> standard_error;  // empty when the data cannot determine it
+};
+
+struct HysteresisFitResult {
+  std::vector<FittedParameter> parameters;  // the free ones, shared first, then per file
+  Eigen::MatrixXd correlation;              // of `parameters`; empty when not computable
+  double initial_cost = 0.0;
+  double final_cost = 0.0;  // ½·Σ r²
+  double residual_rms_N = 0.0;
+  int iterations = 0;
+  bool converged = false;
+  std::string termination;  // Ceres' own words
+  // Parameters the data cannot tell apart or determine: those that carry the Jacobian's
+  // near-null directions (singular value below 1e-6 of the largest, after scaling each column
+  // by its parameter's value), with the reason in words.
+  std::vector<std::string> unidentifiable;
+  std::string identifiability_note;
+  std::vector<std::vector<double>> fitted_force_N;         // per record, at the fitted parameters
+  std::vector<model::StrutTestParameters<double>> fitted;  // per record
+};
+
+// Fits the free strut-test parameters to one or several records at once by nonlinear least
+// squares (Ceres, Levenberg-Marquardt within bounds) on the force residuals. The Jacobian is
+// exact: Jets run through the implicit solver (strut_test_response.h). Standard errors come
+// from ceres::Covariance, scaled by the residual variance s² = 2·cost/(m − n). InputError for
+// an unknown or repeated parameter, a per-file parameter that is not free, bounds with
+// lower >= upper, or a start outside its bounds; RunError when the model cannot be solved at
+// the start.
+HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
+                                   const model::StrutTestParameters<double>& start,
+                                   const HysteresisFitOptions& options);
+
+}  // namespace ridefit::fitting

@@ -1,0 +1,44 @@
+#include "ridefit/fitting/hysteresis_record.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "ridefit/io/csv_table.h"
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::fitting {
+
+HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
+  const io::CsvTable table = io::CsvTable::read(csv_file);
+  HysteresisRecord record;
+  record.source = csv_file.string();
+  record.time_s = table.time_s();
+  const io::CsvColumn& displacement = table.column("displacement");
+  const io::CsvColumn& force = table.column("force");
+  if (displacement.unit != "m") {
+    throw InputError(fmt::format("{}: column displacement is in {}, expected a length (m, mm)",
+                                 csv_file.string(), displacement.unit));
+  }
+  if (force.unit != "N") {
+    throw InputError(fmt::format("{}: column force is in {}, expected a force (N, kN)",
+                                 csv_file.string(), force.unit));
+  }
+  record.displacement_m = displacement.values;
+  record.force_N = force.values;
+  if (record.time_s.size() < 20) {
+    throw InputError(fmt::format("{}: {} samples; a hysteresis fit needs at least 20",
+                                 csv_file.string(), record.time_s.size()));
+  }
+  const auto [lo, hi] =
+      std::minmax_element(record.displacement_m.begin(), record.displacement_m.end());
+  if (!(*hi - *lo > 1e-9)) {
+    throw InputError(fmt::format(
+        "{}: the displacement never moves ({} m throughout): nothing can be identified from "
+        "it",
+        csv_file.string(), *lo));
+  }
+  return record;
+}
+
+}  // namespace ridefit::fitting

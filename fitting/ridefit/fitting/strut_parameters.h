@@ -1,0 +1,58 @@
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "ridefit/model/strut_test.h"
+
+namespace ridefit::fitting {
+
+// The parameters of a strut test by name (the YAML keys), with the physical bounds a fit uses
+// unless told otherwise: wide enough for any passenger-car strut, tight enough to keep the
+// solver out of nonsense (a negative stiffness, a friction exponent of 100).
+struct StrutParameterInfo {
+  std::string_view name;
+  double lower;
+  double upper;
+  bool in_model_file;  // a quarter-car model key (the rig-only ones are not)
+};
+
+inline constexpr std::array<StrutParameterInfo, 8> kStrutParameters{{
+    {"dahl_sigma0_N_per_m", 1e3, 1e10, true},
+    {"coulomb_force_N", 0.0, 1e4, true},
+    {"dahl_exponent", 0.2, 5.0, true},
+    {"top_mount_stiffness_N_per_m", 1e3, 1e10, true},
+    {"damping_Ns_per_m", 1.0, 1e6, true},
+    {"gas_force_N", -1e4, 1e4, false},
+    {"gas_stiffness_N_per_m", -1e6, 1e6, false},
+    {"force_offset_N", -1e4, 1e4, false},
+}};
+
+// Index into kStrutParameters; InputError naming the accepted names for an unknown one.
+std::size_t strut_parameter_index(std::string_view name);
+
+// The field of `p` for kStrutParameters[index].
+template <typename T>
+T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
+  switch (index) {
+    case 0:
+      return p.dahl_sigma0_N_per_m;
+    case 1:
+      return p.coulomb_force_N;
+    case 2:
+      return p.dahl_exponent;
+    case 3:
+      return p.top_mount_stiffness_N_per_m;
+    case 4:
+      return p.damping_Ns_per_m;
+    case 5:
+      return p.gas_force_N;
+    case 6:
+      return p.gas_stiffness_N_per_m;
+    default:
+      return p.force_offset_N;
+  }
+}
+
+}  // namespace ridefit::fitting
