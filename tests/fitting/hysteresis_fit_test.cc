@@ -87,7 +87,7 @@ TEST(HysteresisFit, DynamicHistoryIdentifiesAllFive) {
     EXPECT_NEAR(fit.parameters[static_cast<std::size_t>(i)].value, expected[i], 0.005 * expected[i])
         << fit.parameters[static_cast<std::size_t>(i)].name;
   }
-  EXPECT_TRUE(fit.unidentifiable.empty());
+  EXPECT_TRUE(fit.unidentifiable.empty()) << fit.identifiability_note;
 }
 
 // On a quasi-static triangle the damper force c·v is tiny (0.9 N) and constant while sliding:

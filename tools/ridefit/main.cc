@@ -1,6 +1,7 @@
 // The `ridefit` command: one program with subcommands. Exit codes: 0 success, 1 a run that
 // failed (solver failure, non-convergence), 2 bad input (files, keys, flags).
 #include <fmt/core.h>
+#include <glog/logging.h>
 #include <CLI/CLI.hpp>
 
 #include <exception>
@@ -11,6 +12,10 @@
 #include "subcommands.h"
 
 int main(int argc, char** argv) {
+  // Ceres logs through glog; every condition it reports (a rank-deficient covariance, a
+  // failed step) reaches the user in ridefit's own words, so its log stays quiet.
+  FLAGS_minloglevel = google::GLOG_FATAL;
+  google::InitGoogleLogging(argv[0]);
   CLI::App app{"ridefit: vehicle vertical dynamics with suspension friction"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ridefit 0.1.0");

@@ -11,6 +11,7 @@ void register_simulate(CLI::App& app);
 void register_friction_study(CLI::App& app);
 void register_analyse(CLI::App& app);
 void register_sweep(CLI::App& app);
+void register_fit(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
@@ -18,6 +19,7 @@ inline void register_subcommands(CLI::App& app) {
   register_friction_study(app);
   register_analyse(app);
   register_sweep(app);
+  register_fit(app);
 }
 
 }  // namespace ridefit::cli

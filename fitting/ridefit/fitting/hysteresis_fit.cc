@@ -33,6 +33,7 @@ struct RecordResidual {
   const HysteresisRecord* record = nullptr;
   model::StrutTestParameters<double> base;
   std::vector<std::size_t> fields;  // the parameter of each of this record's blocks
+  std::vector<double> units;        // block value × unit = the parameter
   simulate::StrutTestSolverOptions solver;
 
   template <typename T>
@@ -43,8 +44,8 @@ struct RecordResidual {
       strut_parameter(p, i) = T(strut_parameter(v, i));
     }
     for (std::size_t b = 0; b < fields.size(); ++b) {
-      strut_parameter(p, fields[b]) = blocks[b][0];
-      strut_parameter(v, fields[b]) = value_of(blocks[b][0]);
+      strut_parameter(p, fields[b]) = blocks[b][0] * T(units[b]);
+      strut_parameter(v, fields[b]) = value_of(blocks[b][0]) * units[b];
     }
     const auto force =
         simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v, solver);
@@ -120,17 +121,24 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   for (std::size_t r = 0; r < records.size(); ++r) {
     for (std::size_t index : per_file) blocks.push_back({index, static_cast<int>(r)});
   }
-  std::vector<double> values(blocks.size());
-  for (std::size_t b = 0; b < blocks.size(); ++b)
-    values[b] = strut_parameter(base, blocks[b].parameter);
+  // The solver works on each parameter in units of its start size (σ0 ~ 1e6 N/m and d ~ 1
+  // side by side would leave Levenberg-Marquardt and the covariance badly scaled).
+  std::vector<double> values(blocks.size()), units(blocks.size());
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const auto [lo, hi] = bounds[blocks[b].parameter];
+    const double start_value = strut_parameter(base, blocks[b].parameter);
+    units[b] = std::max(std::abs(start_value), 1e-3 * (hi - lo));
+    values[b] = start_value / units[b];
+  }
 
   ceres::Problem problem;
   for (std::size_t r = 0; r < records.size(); ++r) {
-    auto* functor = new RecordResidual{&records[r], base, {}, options.solver};
+    auto* functor = new RecordResidual{&records[r], base, {}, {}, options.solver};
     std::vector<double*> used;
     for (std::size_t b = 0; b < blocks.size(); ++b) {
       if (blocks[b].record < 0 || blocks[b].record == static_cast<int>(r)) {
         functor->fields.push_back(blocks[b].parameter);
+        functor->units.push_back(units[b]);
         used.push_back(&values[b]);
       }
     }
@@ -143,8 +151,8 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     problem.AddResidualBlock(cost, loss, used);
   }
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    problem.SetParameterLowerBound(&values[b], 0, bounds[blocks[b].parameter].first);
-    problem.SetParameterUpperBound(&values[b], 0, bounds[blocks[b].parameter].second);
+    problem.SetParameterLowerBound(&values[b], 0, bounds[blocks[b].parameter].first / units[b]);
+    problem.SetParameterUpperBound(&values[b], 0, bounds[blocks[b].parameter].second / units[b]);
   }
 
   double initial_cost = 0.0;
@@ -188,11 +196,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
           crs.values[static_cast<std::size_t>(k)];
     }
   }
-  for (std::size_t b = 0; b < blocks.size(); ++b) {
-    const auto [lo, hi] = bounds[blocks[b].parameter];
-    const double scale = std::max(std::abs(values[b]), 1e-3 * (hi - lo));
-    jacobian.col(static_cast<Eigen::Index>(b)) *= scale;
-  }
+  // (its columns are already per unit of each parameter's start size)
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeThinV);
   const auto& sigma = svd.singularValues();
 
@@ -226,8 +230,9 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
       for (std::size_t b = a; b < n; ++b) {
         double c = 0.0;
         covariance.GetCovarianceBlock(&values[a], &values[b], &c);
-        cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = s2 * c;
-        cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = s2 * c;
+        const double physical = s2 * c * units[a] * units[b];
+        cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = physical;
+        cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = physical;
       }
     }
     result.correlation = cov;
@@ -238,18 +243,27 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     }
   }
   // A parameter the data leave undetermined: in a near-null direction of the Jacobian, with a
-  // standard error above half its size, or correlated beyond 0.95 with another (the data then
+  // standard error above half its size, or correlated beyond 0.995 with another (the data then
   // fix only a combination of the two, e.g. damping and friction on a quasi-static triangle).
   std::vector<std::string> pairs_note;
+  if (!have_covariance && weak.empty() && n > 0) {
+    // Ceres found the covariance rank-deficient: the smallest singular direction names the
+    // parameters the data do not fix.
+    const Eigen::Index last = sigma.size() - 1;
+    for (Eigen::Index j = 0; j < svd.matrixV().rows(); ++j) {
+      if (std::abs(svd.matrixV()(j, last)) > 0.3) weak.insert(static_cast<std::size_t>(j));
+    }
+  }
   if (have_covariance) {
     for (std::size_t b = 0; b < n; ++b) {
       const auto [lo, hi] = bounds[blocks[b].parameter];
-      const double size = std::max(std::abs(values[b]), 1e-3 * (hi - lo));
+      const double size = std::max(std::abs(values[b] * units[b]), 1e-3 * (hi - lo));
       const auto i = static_cast<Eigen::Index>(b);
       if (std::sqrt(cov(i, i)) > 0.5 * size) weak.insert(b);
       for (std::size_t c = b + 1; c < n; ++c) {
         const auto j = static_cast<Eigen::Index>(c);
-        if (std::abs(result.correlation(i, j)) > 0.95) {
+        // |ρ| > 0.995: each variance is inflated more than 100-fold by the other (1/(1 − ρ²)).
+        if (std::abs(result.correlation(i, j)) > 0.995) {
           weak.insert(b);
           weak.insert(c);
           pairs_note.push_back(fmt::format("{} and {} (correlation {:.3f})",
@@ -279,7 +293,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     FittedParameter p;
     p.name = std::string(kStrutParameters[blocks[b].parameter].name);
     if (blocks[b].record >= 0) p.file = records[static_cast<std::size_t>(blocks[b].record)].source;
-    p.value = values[b];
+    p.value = values[b] * units[b];
     if (have_covariance)
       p.standard_error = std::sqrt(cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(b)));
     result.parameters.push_back(p);
@@ -288,7 +302,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     model::StrutTestParameters<double> fitted = base;
     for (std::size_t b = 0; b < n; ++b) {
       if (blocks[b].record < 0 || blocks[b].record == static_cast<int>(r)) {
-        strut_parameter(fitted, blocks[b].parameter) = values[b];
+        strut_parameter(fitted, blocks[b].parameter) = values[b] * units[b];
       }
     }
     result.fitted.push_back(fitted);

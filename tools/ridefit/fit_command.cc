@@ -1,0 +1,243 @@
+// ridefit fit hysteresis DATA.csv... --model M.yaml --free a,b,... [--per-file c]
+//                       [--bounds name=lo:hi]... [--start name=value]... [--loss huber|cauchy]
+//                       [-o fitted.yaml] [--plot FILE.png|svg] [--json]
+#include <fmt/core.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "command_options.h"
+#include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/io/atomic_file.h"
+#include "ridefit/io/gnuplot_figure.h"
+#include "ridefit/io/input_error.h"
+#include "ridefit/io/quarter_car_file.h"
+#include "subcommands.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct FitHysteresisFlags {
+  std::vector<std::string> files;
+  std::string model_file;
+  std::vector<std::string> free;
+  std::vector<std::string> per_file;
+  std::vector<std::string> bounds;
+  std::vector<std::string> starts;
+  std::string loss = "none";
+  double loss_scale_N = 5.0;
+  int substeps = 4;
+  std::string output_file;
+  std::string plot_file;
+  bool json = false;
+};
+
+model::StrutTestParameters<double> start_from(const io::QuarterCarFile& file,
+                                              const std::vector<std::string>& starts) {
+  const auto& q = file.parameters;
+  model::StrutTestParameters<double> p{q.dahl_sigma0_N_per_m,
+                                       q.coulomb_force_N,
+                                       q.dahl_exponent,
+                                       q.top_mount_stiffness_N_per_m,
+                                       q.damping_Ns_per_m,
+                                       0.0,
+                                       0.0,
+                                       0.0};
+  for (const auto& [name, value] : parse_overrides(starts)) {
+    try {
+      fitting::strut_parameter(p, fitting::strut_parameter_index(name)) = value;
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--start {}: {}", name, e.what()));
+    }
+  }
+  return p;
+}
+
+std::map<std::string, std::pair<double, double>> parse_bounds(
+    const std::vector<std::string>& entries) {
+  std::map<std::string, std::pair<double, double>> bounds;
+  for (const auto& [name, text] : parse_key_values(entries)) {
+    const auto colon = text.find(':');
+    char* end = nullptr;
+    const std::string lo_text = text.substr(0, colon);
+    const std::string hi_text = colon == std::string::npos ? "" : text.substr(colon + 1);
+    const double lo = std::strtod(lo_text.c_str(), &end);
+    const bool lo_ok = end != lo_text.c_str() && *end == '\0';
+    const double hi = std::strtod(hi_text.c_str(), &end);
+    const bool hi_ok = end != hi_text.c_str() && *end == '\0';
+    if (colon == std::string::npos || !lo_ok || !hi_ok) {
+      throw InputError(fmt::format(
+          "--bounds {}={}: expected NAME=LOWER:UPPER, e.g. coulomb_force_N=10:200", name, text));
+    }
+    fitting::strut_parameter_index(name);
+    bounds[name] = {lo, hi};
+  }
+  return bounds;
+}
+
+// The model file with the fitted model keys replaced; rig-only parameters (gas, offset) are not
+// model keys and stay in the JSON.
+void write_model(const std::string& model_file, model::StrutTestParameters<double> fitted,
+                 const std::vector<std::string>& free, const std::string& path) {
+  YAML::Node root = YAML::LoadFile(model_file);
+  for (const auto& name : free) {
+    const auto index = fitting::strut_parameter_index(name);
+    if (!fitting::kStrutParameters[index].in_model_file) continue;
+    root[name] = fitting::strut_parameter(fitted, index);
+  }
+  io::write_atomically(path, [&](std::ostream& out) {
+    out << "# Fitted by ridefit fit hysteresis from " << model_file << "\n" << root << "\n";
+  });
+}
+
+void run(const FitHysteresisFlags& flags) {
+  std::vector<std::filesystem::path> inputs(flags.files.begin(), flags.files.end());
+  inputs.push_back(flags.model_file);
+  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
+  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
+  const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
+  std::vector<fitting::HysteresisRecord> records;
+  for (const auto& file : flags.files) records.push_back(fitting::load_hysteresis_record(file));
+  fitting::HysteresisFitOptions options;
+  options.free = flags.free;
+  options.per_file = flags.per_file;
+  options.bounds = parse_bounds(flags.bounds);
+  options.loss = flags.loss;
+  options.loss_scale_N = flags.loss_scale_N;
+  options.solver.substeps = flags.substeps;
+  const auto start = start_from(model_file, flags.starts);
+  const fitting::HysteresisFitResult fit = fitting::fit_hysteresis(records, start, options);
+  if (!fit.converged) {
+    throw RunError(fmt::format(
+        "the fit did not converge after {} iterations ({}); no fitted model was written. Try "
+        "better start values (--start) or fewer free parameters",
+        fit.iterations, fit.termination));
+  }
+  std::vector<std::string> written;
+  if (!flags.output_file.empty()) {
+    if (records.size() == 1 || flags.per_file.empty()) {
+      write_model(flags.model_file, fit.fitted.front(), flags.free, flags.output_file);
+      written.push_back(flags.output_file);
+    } else {
+      // Each file has its own values of the per-file parameters: one model per file.
+      const std::filesystem::path out(flags.output_file);
+      for (std::size_t r = 0; r < records.size(); ++r) {
+        const auto path =
+            out.parent_path() /
+            (out.stem().string() + "_" + std::filesystem::path(records[r].source).stem().string() +
+             out.extension().string());
+        write_model(flags.model_file, fit.fitted[r], flags.free, path.string());
+        written.push_back(path.string());
+      }
+    }
+  }
+  if (!flags.plot_file.empty()) {
+    io::Figure figure;
+    figure.title = "measured and fitted hysteresis loops";
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      io::PlotPanel panel =
+          io::xy_panel(std::filesystem::path(records[r].source).filename().string(),
+                       "displacement [mm]", "force [N]");
+      std::vector<double> x_mm;
+      for (double x : records[r].displacement_m) x_mm.push_back(1e3 * x);
+      panel.series.push_back(
+          {"measured", x_mm, records[r].force_N, {}, {}, io::SeriesStyle::kPoints});
+      panel.series.push_back(
+          {"fitted", x_mm, fit.fitted_force_N[r], {}, {}, io::SeriesStyle::kLines});
+      figure.panels.push_back(std::move(panel));
+    }
+    io::draw_figure(figure, flags.plot_file);
+  }
+  if (flags.json) {
+    nlohmann::json j = {{"converged", fit.converged},
+                        {"termination", fit.termination},
+                        {"iterations", fit.iterations},
+                        {"initial_cost", fit.initial_cost},
+                        {"final_cost", fit.final_cost},
+                        {"residual_rms_N", fit.residual_rms_N},
+                        {"unidentifiable", fit.unidentifiable},
+                        {"identifiability_note", fit.identifiability_note},
+                        {"parameters", nlohmann::json::array()},
+                        {"written", written}};
+    for (const auto& p : fit.parameters) {
+      j["parameters"].push_back(
+          {{"name", p.name},
+           {"file", p.file},
+           {"value", p.value},
+           {"standard_error",
+            p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json()}});
+    }
+    nlohmann::json correlation = nlohmann::json::array();
+    for (Eigen::Index a = 0; a < fit.correlation.rows(); ++a) {
+      std::vector<double> row;
+      for (Eigen::Index b = 0; b < fit.correlation.cols(); ++b)
+        row.push_back(fit.correlation(a, b));
+      correlation.push_back(row);
+    }
+    j["correlation"] = correlation;
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << fmt::format("fit of {} file(s): {} iterations, residual RMS {:.4g} N ({})\n",
+                           records.size(), fit.iterations, fit.residual_rms_N, fit.termination);
+  for (const auto& p : fit.parameters) {
+    std::cout << fmt::format("  {:<30} {:>14.6g}  ± {:<12}{}\n", p.name, p.value,
+                             p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : "-",
+                             p.file.empty() ? "" : "  " + p.file);
+  }
+  if (!fit.identifiability_note.empty())
+    std::cout << "warning: " << fit.identifiability_note << "\n";
+  for (const auto& path : written) std::cout << "Fitted model: " << path << "\n";
+  if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
+}
+
+}  // namespace
+
+void register_fit(CLI::App& app) {
+  CLI::App* fit = app.add_subcommand("fit", "Identify model parameters from lab data (Ceres)");
+  fit->require_subcommand(1);
+  auto flags = std::make_shared<FitHysteresisFlags>();
+  CLI::App* command = fit->add_subcommand(
+      "hysteresis",
+      "Fit Dahl friction, top mount and damping to strut rig tests (CSV: time, displacement, "
+      "force)");
+  command->add_option("files", flags->files, "Rig tests (CSV); fitted together")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--model", flags->model_file, "Quarter-car model file: start values")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--free", flags->free,
+                   "Parameters to fit, e.g. dahl_sigma0_N_per_m,coulomb_force_N")
+      ->required()
+      ->delimiter(',');
+  command
+      ->add_option("--per-file", flags->per_file,
+                   "Free parameters each file gets its own value of (e.g. coulomb_force_N)")
+      ->delimiter(',');
+  command->add_option("--bounds", flags->bounds, "NAME=LOWER:UPPER (repeatable)");
+  command->add_option("--start", flags->starts,
+                      "NAME=VALUE start for a parameter not in the model file (gas_force_N, "
+                      "gas_stiffness_N_per_m, force_offset_N) or to override one");
+  command->add_option("--loss", flags->loss, "Robust loss: none, huber, cauchy")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
+      ->capture_default_str();
+  command->add_option("--loss-scale", flags->loss_scale_N, "Residual [N] where the loss bends")
+      ->check(positive_number("N"))
+      ->capture_default_str();
+  command->add_option("--substeps", flags->substeps, "Implicit steps per sample interval")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  command->add_option("-o,--output", flags->output_file, "Fitted model (YAML, the input's schema)");
+  command->add_option("--plot", flags->plot_file, "Measured and fitted loops (.png or .svg)");
+  command->add_flag("--json", flags->json,
+                    "Values, standard errors, correlation, cost, iterations");
+  command->callback([flags] { run(*flags); });
+}
+
+}  // namespace ridefit::cli
