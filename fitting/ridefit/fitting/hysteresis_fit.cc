@@ -57,7 +57,35 @@ struct RecordResidual {
   }
 };
 
-constexpr int kStride = 8;
+// Jets as wide as the record's free values: Ceres evaluates a DynamicAutoDiffCostFunction in
+// passes of `Stride` derivatives, so a stride equal to the count takes one pass with no unused
+// lanes (8 lanes for 3 parameters cost half as much again).
+template <int Stride>
+ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residuals) {
+  auto* cost = new ceres::DynamicAutoDiffCostFunction<RecordResidual, Stride>(functor);
+  for (int i = 0; i < blocks; ++i) cost->AddParameterBlock(1);
+  cost->SetNumResiduals(residuals);
+  return cost;
+}
+
+ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residuals) {
+  switch (blocks) {
+    case 1:
+      return make_cost<1>(functor, blocks, residuals);
+    case 2:
+      return make_cost<2>(functor, blocks, residuals);
+    case 3:
+      return make_cost<3>(functor, blocks, residuals);
+    case 4:
+      return make_cost<4>(functor, blocks, residuals);
+    case 5:
+      return make_cost<5>(functor, blocks, residuals);
+    case 6:
+      return make_cost<6>(functor, blocks, residuals);
+    default:
+      return make_cost<8>(functor, blocks, residuals);
+  }
+}
 
 std::string describe(const Block& block, const std::vector<HysteresisRecord>& records) {
   const std::string name(kStrutParameters[block.parameter].name);
@@ -142,9 +170,8 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
         used.push_back(&values[b]);
       }
     }
-    auto* cost = new ceres::DynamicAutoDiffCostFunction<RecordResidual, kStride>(functor);
-    for (std::size_t i = 0; i < used.size(); ++i) cost->AddParameterBlock(1);
-    cost->SetNumResiduals(static_cast<int>(records[r].force_N.size()));
+    ceres::CostFunction* cost = make_cost(functor, static_cast<int>(used.size()),
+                                          static_cast<int>(records[r].force_N.size()));
     ceres::LossFunction* loss = nullptr;
     if (options.loss == "huber") loss = new ceres::HuberLoss(options.loss_scale_N);
     if (options.loss == "cauchy") loss = new ceres::CauchyLoss(options.loss_scale_N);
