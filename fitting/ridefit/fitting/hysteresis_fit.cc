@@ -96,6 +96,18 @@ std::string describe(const Block& block, const std::vector<HysteresisRecord>& re
 
 }  // namespace
 
+ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
+                                          const model::StrutTestParameters<double>& base,
+                                          const std::vector<std::string>& free,
+                                          const simulate::StrutTestSolverOptions& solver) {
+  auto* functor = new RecordResidual{&record, base, {}, {}, solver};
+  for (const auto& name : free) {
+    functor->fields.push_back(strut_parameter_index(name));
+    functor->units.push_back(1.0);
+  }
+  return make_cost(functor, static_cast<int>(free.size()), static_cast<int>(record.force_N.size()));
+}
+
 HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
                                    const model::StrutTestParameters<double>& start,
                                    const HysteresisFitOptions& options) {

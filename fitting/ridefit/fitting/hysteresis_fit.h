@@ -1,5 +1,7 @@
 #pragma once
 
+#include <ceres/cost_function.h>
+
 #include <Eigen/Core>
 #include <map>
 #include <optional>
@@ -55,6 +57,14 @@ struct HysteresisFitResult {
 // an unknown or repeated parameter, a per-file parameter that is not free, bounds with
 // lower >= upper, or a start outside its bounds; RunError when the model cannot be solved at
 // the start.
+// The residual block of one record (force residuals, N) with one parameter block of size 1 per
+// name in `free`, in the parameters' own units: what fit_hysteresis hands to Ceres, exposed for
+// the gradient check. The caller owns it.
+ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
+                                          const model::StrutTestParameters<double>& base,
+                                          const std::vector<std::string>& free,
+                                          const simulate::StrutTestSolverOptions& solver = {});
+
 HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
                                    const model::StrutTestParameters<double>& start,
                                    const HysteresisFitOptions& options);
