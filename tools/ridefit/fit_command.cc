@@ -31,6 +31,7 @@ struct FitHysteresisFlags {
   std::string loss = "none";
   double loss_scale_N = 5.0;
   int substeps = 4;
+  int max_iterations = 100;
   std::string output_file;
   std::string plot_file;
   bool json = false;
@@ -109,6 +110,7 @@ void run(const FitHysteresisFlags& flags) {
   options.loss = flags.loss;
   options.loss_scale_N = flags.loss_scale_N;
   options.solver.substeps = flags.substeps;
+  options.max_iterations = flags.max_iterations;
   const auto start = start_from(model_file, flags.starts);
   const fitting::HysteresisFitResult fit = fitting::fit_hysteresis(records, start, options);
   if (!fit.converged) {
@@ -232,6 +234,9 @@ void register_fit(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--substeps", flags->substeps, "Implicit steps per sample interval")
       ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  command->add_option("--max-iterations", flags->max_iterations, "Solver iterations at most")
+      ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   command->add_option("-o,--output", flags->output_file, "Fitted model (YAML, the input's schema)");
   command->add_option("--plot", flags->plot_file, "Measured and fitted loops (.png or .svg)");

@@ -155,11 +155,16 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
 
   // Blocks: shared parameters first, then each file's own.
   std::vector<Block> blocks;
-  for (std::size_t index : free) {
+  // In the order the caller named them: shared ones, then each file's own.
+  std::vector<std::size_t> order;
+  for (const auto& name : options.free) order.push_back(strut_parameter_index(name));
+  for (std::size_t index : order) {
     if (!per_file.count(index)) blocks.push_back({index, -1});
   }
   for (std::size_t r = 0; r < records.size(); ++r) {
-    for (std::size_t index : per_file) blocks.push_back({index, static_cast<int>(r)});
+    for (std::size_t index : order) {
+      if (per_file.count(index)) blocks.push_back({index, static_cast<int>(r)});
+    }
   }
   // The solver works on each parameter in units of its start size (σ0 ~ 1e6 N/m and d ~ 1
   // side by side would leave Levenberg-Marquardt and the covariance badly scaled).

@@ -1,0 +1,116 @@
+// `ridefit fit hysteresis` end to end: a fit of a synthetic rig test, its outputs, and the
+// bad-input contract.
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "ridefit/io/quarter_car_file.h"
+#include "ridefit/simulate/strut_test_response.h"
+#include "support/cli_runner.h"
+#include "support/passat.h"
+
+namespace ridefit {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_cli;
+
+class FitCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ridefit_fit_cli_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // One quasi-static triangle cycle (3 mm at 1 mm/s, 100 Hz) of the Passat strut with
+  // Fc = 45 N, displacement in mm.
+  std::string loop() const {
+    const model::StrutTestParameters<double> p{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+    std::vector<double> t, x;
+    for (int k = 0; k <= 1200; ++k) {
+      const double time = k / 100.0, phase = time / 12.0;
+      t.push_back(time);
+      x.push_back(phase < 0.25   ? 0.012 * phase
+                  : phase < 0.75 ? 0.006 - 0.012 * phase
+                                 : -0.012 + 0.012 * phase);
+    }
+    const auto f = *simulate::strut_test_force<double>(t, x, p, p);
+    std::ofstream out(dir_ / "loop.csv");
+    out << "time[s],displacement[mm],force[N]\n";
+    out.precision(10);
+    for (std::size_t k = 0; k < t.size(); ++k)
+      out << t[k] << "," << 1e3 * x[k] << "," << f[k] << "\n";
+    return (dir_ / "loop.csv").string();
+  }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  std::string model() const { return testing::dataset("vehicles/passat_b8_front.yaml"); }
+  fs::path dir_;
+};
+
+TEST_F(FitCli, FitsAndWritesAModelEveryCommandAccepts) {
+  const fs::path fitted = dir_ / "fitted.yaml";
+  const fs::path plot = dir_ / "loops.png";
+  const auto run = run_cli("fit hysteresis " + loop() + " --model " + model() +
+                           " --free coulomb_force_N,dahl_sigma0_N_per_m -o " + fitted.string() +
+                           " --plot " + plot.string() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output);
+  EXPECT_TRUE(j["converged"].get<bool>());
+  EXPECT_NEAR(j["parameters"][0]["value"].get<double>(), 45.0, 0.01);
+  const auto file = io::load_quarter_car(fitted);  // the input's schema
+  EXPECT_NEAR(file.parameters.coulomb_force_N, 45.0, 0.01);
+  EXPECT_DOUBLE_EQ(file.parameters.sprung_mass_kg, 385.40);
+  EXPECT_GT(fs::file_size(plot), 1000u);
+}
+
+TEST_F(FitCli, BadInputsExitWith2AndWriteNothing) {
+  const fs::path fitted = dir_ / "fitted.yaml";
+  const std::string good = loop();
+  auto expect_bad = [&](const std::string& args, const std::string& words) {
+    const auto run = run_cli("fit hysteresis " + args + " -o " + fitted.string());
+    EXPECT_EQ(run.exit_code, 2) << args << "\n" << run.output;
+    EXPECT_NE(run.output.find(words), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(fitted));
+  };
+  const std::string m = " --model " + model();
+  expect_bad(good + m + " --free coulomb_force", "not a strut-test parameter");
+  expect_bad(good + m + " --free coulomb_force_N --bounds coulomb_force_N=100:10", "below upper");
+  expect_bad(good + m + " --free coulomb_force_N --bounds coulomb_force_N=100:200",
+             "outside its bounds");
+  expect_bad(write("nan.csv", "time[s],displacement[mm],force[N]\n0,0,1\n0.01,nan,2\n") + m +
+                 " --free coulomb_force_N",
+             "row 3");
+  expect_bad(write("back.csv", "time[s],displacement[mm],force[N]\n0,0,1\n0.02,1,2\n0.01,2,3\n") +
+                 m + " --free coulomb_force_N",
+             "row 4");
+  expect_bad(
+      write("nocol.csv", "time[s],displacement[mm]\n0,0\n0.01,1\n") + m + " --free coulomb_force_N",
+      "force");
+  std::string constant = "time[s],displacement[mm],force[N]\n";
+  for (int k = 0; k < 50; ++k) constant += std::to_string(k * 0.01) + ",1.5,3\n";
+  expect_bad(write("constant.csv", constant) + m + " --free coulomb_force_N", "never moves");
+}
+
+TEST_F(FitCli, AFitThatDoesNotConvergeExits1WithoutAModel) {
+  const fs::path fitted = dir_ / "fitted.yaml";
+  const auto run = run_cli("fit hysteresis " + loop() + " --model " + model() +
+                           " --free coulomb_force_N,dahl_sigma0_N_per_m,dahl_exponent "
+                           "--max-iterations 1 -o " +
+                           fitted.string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("did not converge"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(fitted));
+}
+
+}  // namespace
+}  // namespace ridefit
