@@ -4,18 +4,22 @@
 #include <fmt/core.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "command_options.h"
+#include "ridefit/fitting/friction_compression.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/signal/hysteresis_friction.h"
 #include "subcommands.h"
 
 namespace ridefit::cli {
@@ -32,6 +36,7 @@ struct FitHysteresisFlags {
   double loss_scale_N = 5.0;
   int substeps = 4;
   int max_iterations = 100;
+  std::vector<double> compression_mm;
   std::string output_file;
   std::string plot_file;
   bool json = false;
@@ -119,6 +124,35 @@ void run(const FitHysteresisFlags& flags) {
         "better start values (--start) or fewer free parameters",
         fit.iterations, fit.termination));
   }
+  // Seed 000's calibration value beside the fitted Fc: half the loop height at x = 0.
+  std::vector<std::optional<signal::HysteresisFriction>> calibration;
+  for (const auto& r : records) {
+    try {
+      calibration.push_back(signal::hysteresis_friction(r.displacement_m, r.force_N));
+    } catch (const InputError&) {
+      calibration.push_back(std::nullopt);  // fewer than 2 cycles through zero: no value
+    }
+  }
+  std::optional<fitting::FrictionCompressionLine> line;
+  if (!flags.compression_mm.empty()) {
+    if (flags.compression_mm.size() != records.size() ||
+        std::find(flags.per_file.begin(), flags.per_file.end(), "coulomb_force_N") ==
+            flags.per_file.end()) {
+      throw InputError(
+          fmt::format("--compression: give one spring compression per file ({} files) and fit "
+                      "coulomb_force_N per file (--per-file coulomb_force_N)",
+                      records.size()));
+    }
+    std::vector<double> x, fc, se;
+    for (const auto& p : fit.parameters) {
+      if (p.name != "coulomb_force_N" || p.file.empty()) continue;
+      fc.push_back(p.value);
+      if (p.standard_error) se.push_back(*p.standard_error);
+    }
+    for (double mm : flags.compression_mm) x.push_back(1e-3 * mm);
+    line = fitting::fit_friction_compression(x, fc,
+                                             se.size() == fc.size() ? se : std::vector<double>());
+  }
   std::vector<std::string> written;
   if (!flags.output_file.empty()) {
     if (records.size() == 1 || flags.per_file.empty()) {
@@ -181,6 +215,25 @@ void run(const FitHysteresisFlags& flags) {
       correlation.push_back(row);
     }
     j["correlation"] = correlation;
+    j["calibration_friction_N"] = nlohmann::json::array();
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      j["calibration_friction_N"].push_back(
+          calibration[r]
+              ? nlohmann::json{{"file", records[r].source},
+                               {"mean", calibration[r]->mean_N},
+                               {"standard_deviation", calibration[r]->standard_deviation_N},
+                               {"cycles", calibration[r]->cycles_used}}
+              : nlohmann::json{{"file", records[r].source}, {"mean", nullptr}});
+    }
+    if (line) {
+      j["friction_against_compression"] = {
+          {"intercept_N", line->intercept_N},
+          {"slope_N_per_m", line->slope_N_per_m},
+          {"intercept_se_N",
+           line->intercept_se_N ? nlohmann::json(*line->intercept_se_N) : nlohmann::json()},
+          {"slope_se_N_per_m",
+           line->slope_se_N_per_m ? nlohmann::json(*line->slope_se_N_per_m) : nlohmann::json()}};
+    }
     std::cout << j.dump(2) << "\n";
     return;
   }
@@ -191,8 +244,25 @@ void run(const FitHysteresisFlags& flags) {
                              p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : "-",
                              p.file.empty() ? "" : "  " + p.file);
   }
-  if (!fit.identifiability_note.empty())
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    if (!calibration[r]) continue;
+    std::cout << fmt::format(
+        "  seed calibration (half the loop height at x = 0, cycles 2-{}): {:.4g}{} N  {}\n",
+        calibration[r]->cycles_used + 1, calibration[r]->mean_N,
+        calibration[r]->cycles_used > 1
+            ? fmt::format(" ± {:.2g}", calibration[r]->standard_deviation_N)
+            : std::string(" (one cycle)"),
+        records[r].source);
+  }
+  if (line) {
+    std::cout << fmt::format(
+        "  Fc = {:.4g} N + {:.4g} N/mm · compression (slope ± {} N/mm)\n", line->intercept_N,
+        1e-3 * line->slope_N_per_m,
+        line->slope_se_N_per_m ? fmt::format("{:.2g}", 1e-3 * *line->slope_se_N_per_m) : "-");
+  }
+  if (!fit.identifiability_note.empty()) {
     std::cout << "warning: " << fit.identifiability_note << "\n";
+  }
   for (const auto& path : written) std::cout << "Fitted model: " << path << "\n";
   if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
 }
@@ -238,6 +308,11 @@ void register_fit(CLI::App& app) {
   command->add_option("--max-iterations", flags->max_iterations, "Solver iterations at most")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
+  command
+      ->add_option("--compression", flags->compression_mm,
+                   "Spring compression [mm] per file: fits Fc against it (seed 000 Figure 4; "
+                   "needs --per-file coulomb_force_N)")
+      ->delimiter(',');
   command->add_option("-o,--output", flags->output_file, "Fitted model (YAML, the input's schema)");
   command->add_option("--plot", flags->plot_file, "Measured and fitted loops (.png or .svg)");
   command->add_flag("--json", flags->json,

@@ -12,6 +12,7 @@ void register_friction_study(CLI::App& app);
 void register_analyse(CLI::App& app);
 void register_sweep(CLI::App& app);
 void register_fit(CLI::App& app);
+void register_generate_lab(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
@@ -20,6 +21,7 @@ inline void register_subcommands(CLI::App& app) {
   register_analyse(app);
   register_sweep(app);
   register_fit(app);
+  register_generate_lab(app);
 }
 
 }  // namespace ridefit::cli
