@@ -9,7 +9,9 @@ namespace ridefit::comfort {
 AdditionalMethodsCheck check_additional_methods(const VibrationMetrics& metrics) {
   AdditionalMethodsCheck check;
   const double aw = metrics.weighted_rms_m_per_s2;
-  if (!(aw > 0.0)) return check;
+  // Below 1 µm/s² there is no vibration to judge (a constant record weights to round-off, whose
+  // ratios are meaningless), far under the 0.01 m/s² where perception starts (ISO 2631-1 C.3).
+  if (!(aw > 1e-6)) return check;
   check.crest_factor = metrics.crest_factor;
   check.mtvv_ratio = metrics.mtvv_m_per_s2 / aw;
   check.vdv_ratio = metrics.vdv_m_per_s1_75 / (aw * std::pow(metrics.duration_s, 0.25));

@@ -52,7 +52,14 @@ WeightedValues weighted_values(comfort::Weighting weighting, const std::vector<d
                                double sample_rate_Hz, double integration_time_s) {
   WeightedValues result;
   result.weighting = weighting;
-  const std::vector<double> weighted = comfort::apply_weighting(weighting, values, sample_rate_Hz);
+  // Every weighting blocks DC (its band-limiting high-pass), so removing the record's mean
+  // changes nothing in steady state; it only spares the filter, which starts from rest, the
+  // start-up transient of a step to a sensor offset.
+  double mean = 0.0;
+  for (double v : values) mean += v / static_cast<double>(values.size());
+  std::vector<double> centred(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) centred[i] = values[i] - mean;
+  const std::vector<double> weighted = comfort::apply_weighting(weighting, centred, sample_rate_Hz);
   result.metrics = comfort::vibration_metrics(weighted, sample_rate_Hz, integration_time_s);
   result.additional_methods = comfort::check_additional_methods(result.metrics);
   if (weighting != comfort::Weighting::kWe) {
@@ -159,7 +166,14 @@ RecordingAnalysis analyse_recordings(std::span<const Recording> recordings,
         throw InputError(
             fmt::format("{}: channel {}: {}", recording.source.string(), names[c], e.what()));
       }
-      metrics.channels.push_back(channel_metrics(recording, column, psd, options));
+      try {
+        metrics.channels.push_back(channel_metrics(recording, column, psd, options));
+      } catch (const InputError& e) {
+        const std::string message = e.what();
+        if (message.starts_with(recording.source.string())) throw;
+        throw InputError(
+            fmt::format("{}: channel {}: {}", recording.source.string(), names[c], message));
+      }
       metrics.channels.back().psd = psd;
       spectra[c].push_back(std::move(psd));
     }
