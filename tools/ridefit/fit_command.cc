@@ -14,6 +14,7 @@
 #include "command_options.h"
 #include "ridefit/fitting/friction_compression.h"
 #include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/fitting/psd_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
@@ -267,6 +268,94 @@ void run(const FitHysteresisFlags& flags) {
   if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
 }
 
+struct FitPsdFlags {
+  std::string file;
+  std::string model_file;
+  std::vector<std::string> free;
+  std::vector<double> band_Hz = {0.5, 30.0};
+  double segment_s = 10.0;
+  int starts = 1;
+  int max_iterations = 50;
+  std::string output_file;
+  std::string plot_file;
+  bool json = false;
+};
+
+void run_psd(const FitPsdFlags& flags) {
+  const std::vector<std::filesystem::path> inputs = {flags.file, flags.model_file};
+  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
+  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
+  if (flags.band_Hz.size() != 2 || !(flags.band_Hz[0] < flags.band_Hz[1])) {
+    throw InputError("--band: expected LOW,HIGH in Hz with LOW < HIGH, e.g. 0.5,30");
+  }
+  const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
+  const fitting::PsdMeasurement measurement = fitting::load_psd_measurement(flags.file);
+  fitting::PsdFitOptions options;
+  options.free = flags.free;
+  options.band_low_Hz = flags.band_Hz[0];
+  options.band_high_Hz = flags.band_Hz[1];
+  options.segment_s = flags.segment_s;
+  options.starts = flags.starts;
+  options.max_iterations = flags.max_iterations;
+  const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
+  if (!fit.converged) {
+    throw RunError(fmt::format(
+        "the PSD fit did not converge after {} iterations ({}); no fitted model was written. Try "
+        "--starts 5 or fewer free parameters",
+        fit.iterations, fit.termination));
+  }
+  if (!flags.output_file.empty()) {
+    YAML::Node root = YAML::LoadFile(flags.model_file);
+    for (std::size_t i = 0; i < fit.names.size(); ++i) root[fit.names[i]] = fit.values[i];
+    io::write_atomically(flags.output_file, [&](std::ostream& out) {
+      out << "# Fitted by ridefit fit psd from " << flags.model_file << " and " << flags.file
+          << "\n"
+          << root << "\n";
+    });
+  }
+  if (!flags.plot_file.empty()) {
+    io::Figure figure;
+    figure.title = "measured and fitted acceleration PSDs";
+    auto panel_of = [&](const char* name, const std::vector<double>& measured,
+                        const std::vector<double>& fitted) {
+      if (measured.empty()) return;
+      io::PlotPanel panel = io::psd_panel(name, "PSD [(m/s^2)^2/Hz]");
+      panel.series.push_back(
+          {"measured", fit.frequency_Hz, measured, {}, {}, io::SeriesStyle::kLines});
+      panel.series.push_back({"fitted", fit.frequency_Hz, fitted, {}, {}, io::SeriesStyle::kLines});
+      figure.panels.push_back(std::move(panel));
+    };
+    panel_of("body_acc", fit.measured_body_psd, fit.fitted_body_psd);
+    panel_of("wheel_acc", fit.measured_wheel_psd, fit.fitted_wheel_psd);
+    io::draw_figure(figure, flags.plot_file);
+  }
+  if (flags.json) {
+    nlohmann::json j = {{"converged", fit.converged},
+                        {"termination", fit.termination},
+                        {"iterations", fit.iterations},
+                        {"final_cost", fit.final_cost},
+                        {"parameters", nlohmann::json::array()}};
+    for (std::size_t i = 0; i < fit.names.size(); ++i) {
+      j["parameters"].push_back(
+          {{"name", fit.names[i]},
+           {"value", fit.values[i]},
+           {"standard_error",
+            fit.standard_errors[i] ? nlohmann::json(*fit.standard_errors[i]) : nlohmann::json()}});
+    }
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << fmt::format("PSD fit of {}: {} iterations, cost {:.4g} ({})\n", flags.file,
+                           fit.iterations, fit.final_cost, fit.termination);
+  for (std::size_t i = 0; i < fit.names.size(); ++i) {
+    std::cout << fmt::format(
+        "  {:<30} {:>14.6g}  ± {}\n", fit.names[i], fit.values[i],
+        fit.standard_errors[i] ? fmt::format("{:.3g}", *fit.standard_errors[i]) : "-");
+  }
+  if (!flags.output_file.empty()) std::cout << "Fitted model: " << flags.output_file << "\n";
+  if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
+}
+
 }  // namespace
 
 void register_fit(CLI::App& app) {
@@ -318,6 +407,38 @@ void register_fit(CLI::App& app) {
   command->add_flag("--json", flags->json,
                     "Values, standard errors, correlation, cost, iterations");
   command->callback([flags] { run(*flags); });
+
+  auto psd = std::make_shared<FitPsdFlags>();
+  CLI::App* psd_command = fit->add_subcommand(
+      "psd",
+      "Fit quarter-car parameters (e.g. the top-mount stiffness) to measured body and wheel "
+      "acceleration spectra (CSV: time, road, body_acc and/or wheel_acc)");
+  psd_command->add_option("file", psd->file, "Measurement (CSV)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  psd_command->add_option("--model", psd->model_file, "Quarter-car model file: start values")
+      ->required()
+      ->check(CLI::ExistingFile);
+  psd_command->add_option("--free", psd->free, "Parameters to fit (1 to 4 model keys)")
+      ->required()
+      ->delimiter(',');
+  psd_command->add_option("--band", psd->band_Hz, "Fitted band LOW,HIGH [Hz]")
+      ->delimiter(',')
+      ->capture_default_str();
+  psd_command->add_option("--segment", psd->segment_s, "Welch segment length [s]")
+      ->check(positive_number("s"))
+      ->capture_default_str();
+  psd_command->add_option("--starts", psd->starts, "Multi-start: number of starting points")
+      ->check(CLI::Range(1, 50))
+      ->capture_default_str();
+  psd_command->add_option("--max-iterations", psd->max_iterations, "Solver iterations at most")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  psd_command->add_option("-o,--output", psd->output_file,
+                          "Fitted model (YAML, the input's schema)");
+  psd_command->add_option("--plot", psd->plot_file, "Measured and fitted PSDs (.png or .svg)");
+  psd_command->add_flag("--json", psd->json, "Values, standard errors, cost, iterations");
+  psd_command->callback([psd] { run_psd(*psd); });
 }
 
 }  // namespace ridefit::cli

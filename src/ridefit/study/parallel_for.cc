@@ -12,11 +12,13 @@ namespace ridefit::study {
 void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body,
                   const std::function<void(std::size_t)>& done) {
   std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
+  // The lowest failing index: indices above it are skipped, those below still run, so the
+  // error reported is the same however the threads interleave.
+  std::atomic<std::size_t> first_failure{count};
   std::mutex mutex;
   std::exception_ptr failure;
   auto worker = [&] {
-    for (std::size_t i = next++; i < count && !failed; i = next++) {
+    for (std::size_t i = next++; i < count && i < first_failure; i = next++) {
       try {
         body(i);
         if (done) {
@@ -25,8 +27,10 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
         }
       } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-        failed = true;
+        if (i < first_failure) {
+          first_failure = i;
+          failure = std::current_exception();
+        }
       }
     }
   };

@@ -1,0 +1,356 @@
+#include "ridefit/fitting/psd_fit.h"
+
+#include <ceres/ceres.h>
+#include <fmt/core.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <complex>
+#include <unsupported/Eigen/FFT>
+
+#include "ridefit/io/csv_table.h"
+#include "ridefit/io/input_error.h"
+#include "ridefit/road/measured_road.h"
+#include "ridefit/signal/hann_window.h"
+#include "ridefit/signal/uniform_sample_rate.h"
+#include "ridefit/simulate/quarter_car_sensitivity.h"
+
+namespace ridefit::fitting {
+namespace {
+
+constexpr int kMaxFree = 4;
+using Jet = ceres::Jet<double, kMaxFree>;
+
+constexpr const char* kNames[] = {"sprung_mass_kg",
+                                  "unsprung_mass_kg",
+                                  "tyre_stiffness_N_per_m",
+                                  "tyre_damping_Ns_per_m",
+                                  "spring_stiffness_N_per_m",
+                                  "top_mount_spring_path_stiffness_N_per_m",
+                                  "top_mount_stiffness_N_per_m",
+                                  "damping_Ns_per_m",
+                                  "dahl_sigma0_N_per_m",
+                                  "coulomb_force_N",
+                                  "dahl_exponent"};
+
+template <typename T>
+T& field(model::QuarterCarParameters<T>& p, std::size_t index) {
+  T* fields[] = {&p.sprung_mass_kg,
+                 &p.unsprung_mass_kg,
+                 &p.tyre_stiffness_N_per_m,
+                 &p.tyre_damping_Ns_per_m,
+                 &p.spring_stiffness_N_per_m,
+                 &p.top_mount_spring_path_stiffness_N_per_m,
+                 &p.top_mount_stiffness_N_per_m,
+                 &p.damping_Ns_per_m,
+                 &p.dahl_sigma0_N_per_m,
+                 &p.coulomb_force_N,
+                 &p.dahl_exponent};
+  return *fields[index];
+}
+
+std::size_t parameter_index(const std::string& name) {
+  std::string list;
+  for (std::size_t i = 0; i < std::size(kNames); ++i) {
+    if (name == kNames[i]) return i;
+    list += (list.empty() ? "" : ", ") + std::string(kNames[i]);
+  }
+  throw InputError(fmt::format("'{}' is not a quarter-car parameter; one of: {}", name, list));
+}
+
+// Welch's PSD (periodic Hann, 50 % overlap, mean removed per segment) of a series and of its
+// tangents, at the bins listed: P[k] and dP[k]/dθ_j = c·mean(2·Re(X̄·dX_j))/(fs·Σw²).
+struct WelchBins {
+  std::vector<std::size_t> bins;
+  std::size_t length = 0;
+  std::vector<double> window;
+  double sample_rate_Hz = 0.0;
+
+  void evaluate(const std::vector<double>& x, const std::vector<std::vector<double>>& tangents,
+                std::vector<double>& psd, std::vector<std::vector<double>>& dpsd) const {
+    Eigen::FFT<double> fft;
+    const std::size_t hop = length / 2;
+    const std::size_t segments = (x.size() - length) / hop + 1;
+    double window_power = 0.0;
+    for (double w : window) window_power += w * w;
+    psd.assign(bins.size(), 0.0);
+    dpsd.assign(tangents.size(), std::vector<double>(bins.size(), 0.0));
+    std::vector<double> segment(length);
+    std::vector<std::complex<double>> spectrum, tangent_spectrum;
+    auto transform = [&](const std::vector<double>& series, std::size_t start,
+                         std::vector<std::complex<double>>& out) {
+      double mean = 0.0;
+      for (std::size_t i = 0; i < length; ++i) mean += series[start + i];
+      mean /= static_cast<double>(length);
+      for (std::size_t i = 0; i < length; ++i) segment[i] = (series[start + i] - mean) * window[i];
+      fft.fwd(out, segment);
+    };
+    for (std::size_t s = 0; s < segments; ++s) {
+      transform(x, s * hop, spectrum);
+      for (std::size_t b = 0; b < bins.size(); ++b) psd[b] += std::norm(spectrum[bins[b]]);
+      for (std::size_t j = 0; j < tangents.size(); ++j) {
+        transform(tangents[j], s * hop, tangent_spectrum);
+        for (std::size_t b = 0; b < bins.size(); ++b) {
+          dpsd[j][b] += 2.0 * std::real(std::conj(spectrum[bins[b]]) * tangent_spectrum[bins[b]]);
+        }
+      }
+    }
+    for (std::size_t b = 0; b < bins.size(); ++b) {
+      const double c = (bins[b] == 0 || 2 * bins[b] == length) ? 1.0 : 2.0;
+      const double norm = c / (static_cast<double>(segments) * sample_rate_Hz * window_power);
+      psd[b] *= norm;
+      for (auto& d : dpsd) d[b] *= norm;
+    }
+  }
+};
+
+class PsdCost : public ceres::CostFunction {
+ public:
+  PsdCost(const PsdMeasurement& m, const model::QuarterCar& car, std::vector<std::size_t> fields,
+          std::vector<double> units, WelchBins welch, std::vector<double> measured_body_log,
+          std::vector<double> measured_wheel_log, int steps)
+      : m_(m),
+        car_(car),
+        fields_(std::move(fields)),
+        units_(std::move(units)),
+        welch_(std::move(welch)),
+        body_log_(std::move(measured_body_log)),
+        wheel_log_(std::move(measured_wheel_log)),
+        steps_(steps) {
+    set_num_residuals(static_cast<int>(body_log_.size() + wheel_log_.size()));
+    for (std::size_t i = 0; i < fields_.size(); ++i) mutable_parameter_block_sizes()->push_back(1);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    model::QuarterCarParameters<double> values = car_.parameters();
+    model::QuarterCarParameters<Jet> jets = values.cast<Jet>();
+    for (std::size_t i = 0; i < fields_.size(); ++i) {
+      const double v = parameters[i][0] * units_[i];
+      field(values, fields_[i]) = v;
+      field(jets, fields_[i]) = Jet(v, static_cast<int>(i));
+      field(jets, fields_[i]).v[static_cast<Eigen::Index>(i)] = units_[i];
+    }
+    const model::QuarterCar car(car_.damper_state(), values);
+    if (!jacobians) return evaluate_values(car, values, residuals);
+    const auto series =
+        simulate::quarter_car_accelerations<Jet>(car, jets, values, *m_.road, m_.time_s, steps_);
+    if (!series) return false;
+    std::size_t row = 0;
+    auto channel = [&](const std::vector<Jet>& acc, const std::vector<double>& measured_log) {
+      if (measured_log.empty()) return true;
+      std::vector<double> x(acc.size());
+      std::vector<std::vector<double>> tangents(fields_.size(), std::vector<double>(acc.size()));
+      for (std::size_t k = 0; k < acc.size(); ++k) {
+        x[k] = acc[k].a;
+        for (std::size_t j = 0; j < fields_.size(); ++j) {
+          tangents[j][k] = acc[k].v[static_cast<Eigen::Index>(j)];
+        }
+      }
+      std::vector<double> psd;
+      std::vector<std::vector<double>> dpsd;
+      welch_.evaluate(x, tangents, psd, dpsd);
+      for (std::size_t b = 0; b < psd.size(); ++b, ++row) {
+        if (!(psd[b] > 0.0)) return false;
+        residuals[row] = std::log(psd[b]) - measured_log[b];
+        if (jacobians) {
+          for (std::size_t j = 0; j < fields_.size(); ++j) {
+            if (jacobians[j]) jacobians[j][row] = dpsd[j][b] / psd[b];
+          }
+        }
+      }
+      return true;
+    };
+    return channel(series->body, body_log_) && channel(series->wheel, wheel_log_);
+  }
+
+ private:
+  // Residuals only (Ceres' trial steps): the same run in doubles, without tangents.
+  bool evaluate_values(const model::QuarterCar& car, const model::QuarterCarParameters<double>& p,
+                       double* residuals) const {
+    const auto series =
+        simulate::quarter_car_accelerations<double>(car, p, p, *m_.road, m_.time_s, steps_);
+    if (!series) return false;
+    std::size_t row = 0;
+    for (const auto& [acc, measured_log] :
+         {std::pair{&series->body, &body_log_}, std::pair{&series->wheel, &wheel_log_}}) {
+      if (measured_log->empty()) continue;
+      std::vector<double> psd;
+      std::vector<std::vector<double>> none;
+      welch_.evaluate(*acc, {}, psd, none);
+      for (std::size_t b = 0; b < psd.size(); ++b, ++row) {
+        if (!(psd[b] > 0.0)) return false;
+        residuals[row] = std::log(psd[b]) - (*measured_log)[b];
+      }
+    }
+    return true;
+  }
+
+  const PsdMeasurement& m_;
+  const model::QuarterCar& car_;
+  std::vector<std::size_t> fields_;
+  std::vector<double> units_;
+  WelchBins welch_;
+  std::vector<double> body_log_, wheel_log_;
+  int steps_;
+};
+
+std::vector<double> log_psd(const WelchBins& welch, const std::vector<double>& x) {
+  std::vector<double> psd;
+  std::vector<std::vector<double>> none;
+  welch.evaluate(x, {}, psd, none);
+  for (double& p : psd) p = std::log(std::max(p, 1e-300));
+  return psd;
+}
+
+}  // namespace
+
+PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file) {
+  const io::CsvTable table = io::CsvTable::read(csv_file);
+  PsdMeasurement m;
+  m.source = csv_file.string();
+  m.time_s = table.time_s();
+  m.sample_rate_Hz = signal::uniform_sample_rate_Hz(m.time_s, m.source);
+  const auto& road = table.column("road");
+  if (road.unit != "m") {
+    throw InputError(
+        fmt::format("{}: column road is in {}, expected a length (m, mm)", m.source, road.unit));
+  }
+  m.road = std::make_shared<road::MeasuredRoad>(m.time_s, road.values);
+  if (table.has("body_acc")) m.body_acc_m_per_s2 = table.column("body_acc").values;
+  if (table.has("wheel_acc")) m.wheel_acc_m_per_s2 = table.column("wheel_acc").values;
+  if (m.body_acc_m_per_s2.empty() && m.wheel_acc_m_per_s2.empty()) {
+    throw InputError(fmt::format(
+        "{}: no body_acc or wheel_acc column; the PSD fit needs at least one", m.source));
+  }
+  return m;
+}
+
+PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
+                     const PsdFitOptions& options) {
+  if (options.free.empty() || options.free.size() > kMaxFree) {
+    throw InputError(fmt::format("--free: name 1 to {} parameters to fit", kMaxFree));
+  }
+  std::vector<std::size_t> fields;
+  for (const auto& name : options.free) fields.push_back(parameter_index(name));
+  WelchBins welch;
+  welch.sample_rate_Hz = m.sample_rate_Hz;
+  welch.length = static_cast<std::size_t>(std::lround(options.segment_s * m.sample_rate_Hz));
+  if (welch.length < 16 || welch.length > m.time_s.size()) {
+    throw InputError(
+        fmt::format("{}: a {} s segment needs {} samples of the {} recorded; use a shorter segment",
+                    m.source, options.segment_s, welch.length, m.time_s.size()));
+  }
+  welch.window = signal::periodic_hann_window(welch.length);
+  for (std::size_t k = 1; 2 * k <= welch.length; ++k) {
+    const double f = static_cast<double>(k) * m.sample_rate_Hz / static_cast<double>(welch.length);
+    if (f >= options.band_low_Hz && f <= options.band_high_Hz) welch.bins.push_back(k);
+  }
+  if (welch.bins.size() < options.free.size() + 2) {
+    throw InputError(fmt::format("band {}–{} Hz holds {} PSD bins; widen it", options.band_low_Hz,
+                                 options.band_high_Hz, welch.bins.size()));
+  }
+  const std::vector<double> body_log =
+      m.body_acc_m_per_s2.empty() ? std::vector<double>() : log_psd(welch, m.body_acc_m_per_s2);
+  const std::vector<double> wheel_log =
+      m.wheel_acc_m_per_s2.empty() ? std::vector<double>() : log_psd(welch, m.wheel_acc_m_per_s2);
+
+  model::QuarterCarParameters<double> start = car.parameters();
+  std::vector<std::pair<double, double>> bounds;
+  std::vector<double> units;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    const double v = field(start, fields[i]);
+    std::pair<double, double> b{v / 10.0, v * 10.0};
+    if (auto it = options.bounds.find(options.free[i]); it != options.bounds.end()) b = it->second;
+    if (!(b.first < b.second) || !(v >= b.first && v <= b.second) || !(v > 0.0)) {
+      throw InputError(
+          fmt::format("{}: start {} must be > 0 and inside its bounds [{}, {}] (lower below upper)",
+                      options.free[i], v, b.first, b.second));
+    }
+    bounds.push_back(b);
+    units.push_back(v);
+  }
+
+  PsdFitResult best;
+  best.final_cost = std::numeric_limits<double>::infinity();
+  for (int start_index = 0; start_index < std::max(1, options.starts); ++start_index) {
+    std::vector<double> x(fields.size());
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      // Start 0 is the model's value; the others spread geometrically inside the bounds.
+      const double fraction = (start_index + 0.5) / std::max(1, options.starts);
+      const double v =
+          start_index == 0
+              ? units[i]
+              : bounds[i].first * std::pow(bounds[i].second / bounds[i].first, fraction);
+      x[i] = v / units[i];
+    }
+    ceres::Problem problem;
+    auto* cost =
+        new PsdCost(m, car, fields, units, welch, body_log, wheel_log, options.steps_per_sample);
+    std::vector<double*> blocks;
+    for (double& v : x) blocks.push_back(&v);
+    problem.AddResidualBlock(cost, nullptr, blocks);
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      problem.SetParameterLowerBound(&x[i], 0, bounds[i].first / units[i]);
+      problem.SetParameterUpperBound(&x[i], 0, bounds[i].second / units[i]);
+    }
+    ceres::Solver::Options solver;
+    solver.linear_solver_type = ceres::DENSE_QR;
+    solver.max_num_iterations = options.max_iterations;
+    solver.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(solver, &problem, &summary);
+    if (!(summary.final_cost < best.final_cost)) continue;
+    PsdFitResult result;
+    result.names = options.free;
+    result.final_cost = summary.final_cost;
+    result.iterations = static_cast<int>(summary.iterations.size()) - 1;
+    result.converged = summary.termination_type == ceres::CONVERGENCE;
+    result.termination = summary.message;
+    const double dof =
+        static_cast<double>(cost->num_residuals()) - static_cast<double>(fields.size());
+    const double s2 = dof > 0 ? 2.0 * summary.final_cost / dof : 0.0;
+    ceres::Covariance::Options covariance_options;
+    covariance_options.algorithm_type = ceres::DENSE_SVD;
+    ceres::Covariance covariance(covariance_options);
+    std::vector<std::pair<const double*, const double*>> pairs;
+    for (double& v : x) pairs.emplace_back(&v, &v);
+    const bool have = dof > 0 && covariance.Compute(pairs, &problem);
+    result.fitted = car.parameters();
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      const double value = x[i] * units[i];
+      result.values.push_back(value);
+      field(result.fitted, fields[i]) = value;
+      double c = 0.0;
+      if (have && covariance.GetCovarianceBlock(&x[i], &x[i], &c)) {
+        result.standard_errors.push_back(std::sqrt(s2 * c) * units[i]);
+      } else {
+        result.standard_errors.push_back(std::nullopt);
+      }
+    }
+    best = std::move(result);
+  }
+  // The spectra at the optimum, for the figure.
+  for (std::size_t b : welch.bins) {
+    best.frequency_Hz.push_back(static_cast<double>(b) * m.sample_rate_Hz /
+                                static_cast<double>(welch.length));
+  }
+  const model::QuarterCar fitted_car(car.damper_state(), best.fitted);
+  const auto series = simulate::quarter_car_accelerations<double>(
+      fitted_car, best.fitted, best.fitted, *m.road, m.time_s, options.steps_per_sample);
+  auto exp_of = [](std::vector<double> v) {
+    for (double& x : v) x = std::exp(x);
+    return v;
+  };
+  if (series && !body_log.empty()) {
+    best.measured_body_psd = exp_of(body_log);
+    best.fitted_body_psd = exp_of(log_psd(welch, series->body));
+  }
+  if (series && !wheel_log.empty()) {
+    best.measured_wheel_psd = exp_of(wheel_log);
+    best.fitted_wheel_psd = exp_of(log_psd(welch, series->wheel));
+  }
+  return best;
+}
+
+}  // namespace ridefit::fitting

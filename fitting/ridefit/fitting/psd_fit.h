@@ -1,0 +1,66 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ridefit/model/quarter_car.h"
+#include "ridefit/road/road_input.h"
+
+namespace ridefit::fitting {
+
+// A vehicle measurement for the PSD fit: the road under the wheel and the measured body and/or
+// wheel acceleration, on one uniform time base.
+struct PsdMeasurement {
+  std::string source;
+  std::vector<double> time_s;
+  double sample_rate_Hz = 0.0;
+  std::shared_ptr<road::RoadInput> road;
+  std::vector<double> body_acc_m_per_s2;   // empty when the file has no body_acc
+  std::vector<double> wheel_acc_m_per_s2;  // empty when the file has no wheel_acc
+};
+
+// Reads a CSV with `time`, `road` and at least one of `body_acc`, `wheel_acc` (any supported
+// units). InputError naming the file and what is missing.
+PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file);
+
+struct PsdFitOptions {
+  std::vector<std::string> free;                            // quarter-car keys, at most 4
+  std::map<std::string, std::pair<double, double>> bounds;  // default: a decade each way
+  double band_low_Hz = 0.5;
+  double band_high_Hz = 30.0;
+  double segment_s = 10.0;  // Welch, Hann, 50 % overlap, the same on both sides
+  int steps_per_sample = 1;
+  int max_iterations = 50;
+  int starts = 1;  // multi-start: also start at these many spread points within the bounds
+};
+
+struct PsdFitResult {
+  std::vector<std::string> names;
+  std::vector<double> values;
+  std::vector<std::optional<double>> standard_errors;
+  double final_cost = 0.0;
+  int iterations = 0;
+  bool converged = false;
+  std::string termination;
+  std::vector<double> frequency_Hz;                          // the band's bins
+  std::vector<double> measured_body_psd, fitted_body_psd;    // empty without body_acc
+  std::vector<double> measured_wheel_psd, fitted_wheel_psd;  // empty without wheel_acc
+  model::QuarterCarParameters<double> fitted;
+};
+
+// Fits the free parameters of the stick/slip (or the file's) quarter car so that its simulated
+// body and wheel acceleration PSDs match the measured ones over the band: residuals are the
+// differences of the natural logs of the PSDs bin by bin (Welch with the same settings on both
+// sides, so every bin has the same χ² confidence and the same weight). The simulation runs the
+// measured road through quarter_car_accelerations with Jets, and the PSD's derivatives follow
+// from the FFT's linearity (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard
+// errors from the Jacobian at the optimum, scaled by the residual variance.
+PsdFitResult fit_psd(const PsdMeasurement& measurement, const model::QuarterCar& car,
+                     const PsdFitOptions& options);
+
+}  // namespace ridefit::fitting
