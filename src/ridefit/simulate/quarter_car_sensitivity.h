@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <unsupported/Eigen/AutoDiff>
@@ -39,28 +40,42 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
     std::span<const double> output_times_s, int steps_per_sample = 2) {
   using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, model::QuarterCar::kMaxStates, 1>;
   using AutoDiff = Eigen::AutoDiffScalar<Gradient>;
+  // Stack-allocated up to the model's 6 states: the inner loop must not touch the heap.
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, model::QuarterCar::kMaxStates, 1>;
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0,
+                               model::QuarterCar::kMaxStates, model::QuarterCar::kMaxStates>;
   const int n = car.state_size();
   const double gamma = 1.0 - std::sqrt(0.5);
   const model::QuarterCarParameters<AutoDiff> ad_values = values.template cast<AutoDiff>();
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
+  Vector y = Vector::Zero(n);
   std::vector<T> yt(static_cast<std::size_t>(n), T(0.0));
   AccelerationSeries<T> out;
+  // Newton iterations and the Jacobian ask for the road at the same stage time again and again.
+  double cached_time = std::numeric_limits<double>::quiet_NaN();
+  road::RoadSample cached_road;
+  auto road_at = [&](double t) {
+    if (t != cached_time) {
+      cached_road = road.at(t);
+      cached_time = t;
+    }
+    return cached_road;
+  };
   auto record = [&](double t) {
     std::vector<T> ydot(static_cast<std::size_t>(n));
-    car.derivatives(yt.data(), road.at(t), parameters, ydot.data());
+    car.derivatives(yt.data(), road_at(t), parameters, ydot.data());
     out.body.push_back(ydot[2]);
     out.wheel.push_back(ydot[3]);
   };
-  auto f_double = [&](double t, const Eigen::VectorXd& state, Eigen::VectorXd& rate) {
+  auto f_double = [&](double t, const Vector& state, Vector& rate) {
     rate.resize(n);
-    car.derivatives(state.data(), road.at(t), values, rate.data());
+    car.derivatives(state.data(), road_at(t), values, rate.data());
   };
-  auto jacobian = [&](double t, const Eigen::VectorXd& state) {
+  auto jacobian = [&](double t, const Vector& state) {
     AutoDiff xa[model::QuarterCar::kMaxStates];
     AutoDiff fa[model::QuarterCar::kMaxStates];
     for (int i = 0; i < n; ++i) xa[i] = AutoDiff(state[i], n, i);
-    car.derivatives(xa, road.at(t), ad_values, fa);
-    Eigen::MatrixXd j(n, n);
+    car.derivatives(xa, road_at(t), ad_values, fa);
+    Matrix j(n, n);
     for (int r = 0; r < n; ++r) {
       for (int c = 0; c < n; ++c) {
         j(r, c) = fa[r].derivatives().size() == n ? fa[r].derivatives()[c] : 0.0;
@@ -68,8 +83,8 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
     }
     return j;
   };
-  const Eigen::VectorXd scale = [&] {
-    Eigen::VectorXd s(n);
+  const Vector scale = [&] {
+    Vector s(n);
     for (int i = 0; i < n; ++i) s[i] = i < 2 ? 1e-6 : i < 4 ? 1e-5 : i == 4 ? 1e-7 : 1e-3;
     return s;
   }();
@@ -77,25 +92,23 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
   // inside a step) the step is split in two, down to h/64.
   std::function<bool(double, double, int)> advance = [&](double t0, double h, int depth) -> bool {
     const auto attempt = [&]() -> bool {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Eigen::MatrixXd::Identity(n, n) -
-                                                    gamma * h * jacobian(t0, y));
+      const Eigen::PartialPivLU<Matrix> lu(Matrix::Identity(n, n) - gamma * h * jacobian(t0, y));
       // Stage i solves Y = base + γh·f(t_i, Y); base_T is its Jet counterpart.
-      auto solve_stage = [&](double t_stage, const Eigen::VectorXd& base,
-                             const std::vector<T>& base_t, Eigen::VectorXd& stage,
-                             std::vector<T>& stage_t) {
+      auto solve_stage = [&](double t_stage, const Vector& base, const std::vector<T>& base_t,
+                             Vector& stage, std::vector<T>& stage_t) {
         stage = base;
-        Eigen::VectorXd rate;
+        Vector rate;
         bool converged = false;
         // Simplified Newton on the step's G; where the Dahl element switches branch G goes
         // stale, so after a few slow iterations it is re-formed at the current iterate.
-        Eigen::PartialPivLU<Eigen::MatrixXd> local = lu;
+        Eigen::PartialPivLU<Matrix> local = lu;
         for (int it = 0; it < 40; ++it) {
           if (it > 0 && it % 6 == 0) {
-            local.compute(Eigen::MatrixXd::Identity(n, n) - gamma * h * jacobian(t_stage, stage));
+            local.compute(Matrix::Identity(n, n) - gamma * h * jacobian(t_stage, stage));
           }
           f_double(t_stage, stage, rate);
-          const Eigen::VectorXd residual = stage - base - gamma * h * rate;
-          const Eigen::VectorXd step = local.solve(residual);
+          const Vector residual = stage - base - gamma * h * rate;
+          const Vector step = local.solve(residual);
           if (!step.allFinite()) return false;
           stage -= step;
           if ((step.array().abs() / (stage.array().abs() + scale.array())).maxCoeff() < 1e-9) {
@@ -105,12 +118,12 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
         }
         if (!converged) return false;
         // One exact Newton step in T: G at the converged stage, residual in T.
-        const Eigen::PartialPivLU<Eigen::MatrixXd> exact(Eigen::MatrixXd::Identity(n, n) -
-                                                         gamma * h * jacobian(t_stage, stage));
-        const Eigen::MatrixXd g_inverse = exact.inverse();
+        const Eigen::PartialPivLU<Matrix> exact(Matrix::Identity(n, n) -
+                                                gamma * h * jacobian(t_stage, stage));
+        const Matrix g_inverse = exact.inverse();
         std::vector<T> y_stage(static_cast<std::size_t>(n)), rate_t(static_cast<std::size_t>(n));
         for (int i = 0; i < n; ++i) y_stage[static_cast<std::size_t>(i)] = T(stage[i]);
-        car.derivatives(y_stage.data(), road.at(t_stage), parameters, rate_t.data());
+        car.derivatives(y_stage.data(), road_at(t_stage), parameters, rate_t.data());
         std::vector<T> residual_t(static_cast<std::size_t>(n));
         for (int i = 0; i < n; ++i) {
           const auto u = static_cast<std::size_t>(i);
@@ -126,18 +139,18 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
         }
         return true;
       };
-      Eigen::VectorXd y1, y2;
+      Vector y1, y2;
       std::vector<T> y1_t, y2_t;
       if (!solve_stage(t0 + gamma * h, y, yt, y1, y1_t)) return false;
       // f(Y1) from the stage equation, exactly as the scheme defines it: (Y1 − y_n)/(γh).
       std::vector<T> k1_t(static_cast<std::size_t>(n));
-      Eigen::VectorXd k1(n);
+      Vector k1(n);
       for (int i = 0; i < n; ++i) {
         const auto u = static_cast<std::size_t>(i);
         k1[i] = (y1[i] - y[i]) / (gamma * h);
         k1_t[u] = (y1_t[u] - yt[u]) / T(gamma * h);
       }
-      Eigen::VectorXd base2 = y + (1.0 - gamma) * h * k1;
+      Vector base2 = y + (1.0 - gamma) * h * k1;
       std::vector<T> base2_t(static_cast<std::size_t>(n));
       for (int i = 0; i < n; ++i) {
         const auto u = static_cast<std::size_t>(i);
@@ -148,7 +161,7 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
       yt = y2_t;
       return true;
     };
-    const Eigen::VectorXd y_saved = y;
+    const Vector y_saved = y;
     const std::vector<T> yt_saved = yt;
     if (attempt()) return true;
     y = y_saved;
