@@ -270,6 +270,7 @@ void run(const FitHysteresisFlags& flags) {
 
 struct FitPsdFlags {
   std::string file;
+  std::string excitation_file;
   std::string model_file;
   std::vector<std::string> free;
   std::vector<double> band_Hz = {0.5, 30.0};
@@ -282,14 +283,16 @@ struct FitPsdFlags {
 };
 
 void run_psd(const FitPsdFlags& flags) {
-  const std::vector<std::filesystem::path> inputs = {flags.file, flags.model_file};
+  std::vector<std::filesystem::path> inputs = {flags.file, flags.model_file};
+  if (!flags.excitation_file.empty()) inputs.push_back(flags.excitation_file);
   if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
   if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
   if (flags.band_Hz.size() != 2 || !(flags.band_Hz[0] < flags.band_Hz[1])) {
     throw InputError("--band: expected LOW,HIGH in Hz with LOW < HIGH, e.g. 0.5,30");
   }
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
-  const fitting::PsdMeasurement measurement = fitting::load_psd_measurement(flags.file);
+  const fitting::PsdMeasurement measurement =
+      fitting::load_psd_measurement(flags.file, flags.excitation_file);
   fitting::PsdFitOptions options;
   options.free = flags.free;
   options.band_low_Hz = flags.band_Hz[0];
@@ -418,6 +421,10 @@ void register_fit(CLI::App& app) {
       ->check(CLI::ExistingFile);
   psd_command->add_option("--model", psd->model_file, "Quarter-car model file: start values")
       ->required()
+      ->check(CLI::ExistingFile);
+  psd_command
+      ->add_option("--excitation", psd->excitation_file,
+                   "The road as a known excitation file instead of a road column")
       ->check(CLI::ExistingFile);
   psd_command->add_option("--free", psd->free, "Parameters to fit (1 to 4 model keys)")
       ->required()

@@ -10,6 +10,7 @@
 
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
 #include "ridefit/signal/hann_window.h"
 #include "ridefit/signal/uniform_sample_rate.h"
@@ -205,18 +206,38 @@ std::vector<double> log_psd(const WelchBins& welch, const std::vector<double>& x
 
 }  // namespace
 
-PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file) {
+PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
+                                    const std::filesystem::path& excitation_file) {
   const io::CsvTable table = io::CsvTable::read(csv_file);
   PsdMeasurement m;
   m.source = csv_file.string();
   m.time_s = table.time_s();
   m.sample_rate_Hz = signal::uniform_sample_rate_Hz(m.time_s, m.source);
-  const auto& road = table.column("road");
-  if (road.unit != "m") {
-    throw InputError(
-        fmt::format("{}: column road is in {}, expected a length (m, mm)", m.source, road.unit));
+  if (!excitation_file.empty()) {
+    if (table.has("road")) {
+      throw InputError(fmt::format(
+          "{} has a road column and an excitation file was given too; give one of them", m.source));
+    }
+    m.road = std::shared_ptr<road::RoadInput>(road::load_excitation(excitation_file));
+    if (m.road->duration_s() < m.time_s.back() - 1e-9) {
+      throw InputError(fmt::format("{}: the excitation lasts {} s, the measurement {} s",
+                                   excitation_file.string(), m.road->duration_s(),
+                                   m.time_s.back()));
+    }
+  } else {
+    if (!table.has("road")) {
+      throw InputError(
+          fmt::format("{}: no road column; give the road as a column or as an excitation file "
+                      "(--excitation)",
+                      m.source));
+    }
+    const auto& road = table.column("road");
+    if (road.unit != "m") {
+      throw InputError(
+          fmt::format("{}: column road is in {}, expected a length (m, mm)", m.source, road.unit));
+    }
+    m.road = std::make_shared<road::MeasuredRoad>(m.time_s, road.values);
   }
-  m.road = std::make_shared<road::MeasuredRoad>(m.time_s, road.values);
   if (table.has("body_acc")) m.body_acc_m_per_s2 = table.column("body_acc").values;
   if (table.has("wheel_acc")) m.wheel_acc_m_per_s2 = table.column("wheel_acc").values;
   if (m.body_acc_m_per_s2.empty() && m.wheel_acc_m_per_s2.empty()) {
@@ -226,8 +247,20 @@ PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file) {
   return m;
 }
 
-PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
-                     const PsdFitOptions& options) {
+namespace {
+
+// Everything a PSD fit fixes before it iterates: the parameters, their bounds and units, the
+// Welch bins of the band and the measured log-PSDs.
+struct PsdSetup {
+  std::vector<std::size_t> fields;
+  std::vector<std::pair<double, double>> bounds;
+  std::vector<double> units;
+  WelchBins welch;
+  std::vector<double> body_log, wheel_log;
+};
+
+PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
+                 const PsdFitOptions& options) {
   if (options.free.empty() || options.free.size() > kMaxFree) {
     throw InputError(fmt::format("--free: name 1 to {} parameters to fit", kMaxFree));
   }
@@ -271,6 +304,22 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
     units.push_back(v);
   }
 
+  return {fields, bounds, units, welch, body_log, wheel_log};
+}
+
+}  // namespace
+
+ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
+                                   const PsdFitOptions& options) {
+  const PsdSetup setup = prepare(measurement, car, options);
+  return new PsdCost(measurement, car, setup.fields, setup.units, setup.welch, setup.body_log,
+                     setup.wheel_log, options.steps_per_sample);
+}
+
+PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
+                     const PsdFitOptions& options) {
+  const PsdSetup setup = prepare(m, car, options);
+  const auto& [fields, bounds, units, welch, body_log, wheel_log] = setup;
   PsdFitResult best;
   best.final_cost = std::numeric_limits<double>::infinity();
   for (int start_index = 0; start_index < std::max(1, options.starts); ++start_index) {
