@@ -61,9 +61,9 @@ TEST(PsdFit, RecoversA488NPerMmTopMount) { expect_recovered(488000.0, 600000.0);
 TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 560000.0); }
 
 // The log-PSD residuals' Jacobian (tangents through the SDIRK steps and the FFT) against central
-// differences of the same residuals, every bin. Only the top-mount column is asserted: the
-// coulomb_force_N column disagrees (by ~18 % of its largest entry with ceres::Jet, while the same
-// tangent with Eigen's AutoDiffScalar matches) — an open defect, recorded in psd_fit.h.
+// differences of the same residuals, both parameters, every bin. (The Coulomb-force column is
+// the one that caught signed_power dropping the tangent at s = 0, where a sliding Dahl element
+// sits; scalar_math.h.)
 TEST(PsdFit, GradientCheckAgainstCentralDifferences) {
   auto m = measure(488000.0);
   m.time_s.resize(10001);  // 10 s are enough for the check
@@ -80,7 +80,7 @@ TEST(PsdFit, GradientCheckAgainstCentralDifferences) {
   std::vector<double> residuals(rows), j0(rows), j1(rows);
   double* jacobians[2] = {j0.data(), j1.data()};
   ASSERT_TRUE(cost->Evaluate(blocks, residuals.data(), jacobians));
-  for (int p = 0; p < 1; ++p) {
+  for (int p = 0; p < 2; ++p) {
     const double saved = x[p], step = 1e-6;
     std::vector<double> up(rows), down(rows);
     x[p] = saved + step;

@@ -64,10 +64,6 @@ struct PsdFitResult {
 // measured road through quarter_car_accelerations with Jets, and the PSD's derivatives follow
 // from the FFT's linearity (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard
 // errors from the Jacobian at the optimum, scaled by the residual variance.
-//
-// Open defect: with coulomb_force_N free, its Jacobian column disagrees with central differences
-// (psd_fit_test.cc); the fit still converges to the right value on the tests' data, but that
-// parameter's standard error is not to be trusted until this is found.
 // The cost function fit_psd hands to Ceres (log-PSD residuals of the band, one parameter block of
 // size 1 per free parameter in units of its start value, so 1.0 is the model's value), exposed
 // for the gradient check. The caller owns it; `measurement` and `car` must outlive it.

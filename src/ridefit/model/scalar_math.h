@@ -16,14 +16,17 @@ T sign_positive_at_zero(const T& x) {
   return x < 0.0 ? T(-1.0) : T(1.0);
 }
 
-// sgn(s) * |s|^d for d > 0, with an exact zero at s = 0 (where log|s| would be -inf, and
-// its derivative with respect to d is 0 by continuity).
+// sgn(s) * |s|^d for d > 0, with an exact zero at s = 0, where log|s| would be -inf. There the
+// derivative with respect to d is 0 by continuity, and the one with respect to s is that of the
+// power: 1 for d = 1 (s itself is returned, so tangents pass through: the Dahl element sits at
+// exactly s = 0 while it slides, F = ±Fc, and the fits differentiate through it), 0 for d > 1
+// and unbounded for d < 1 (0 is kept: a one-sided choice).
 template <typename T, typename E>
 T signed_power(const T& s, const E& d) {
   using std::abs;
   using std::exp;
   using std::log;
-  if (s == 0.0) return T(0.0);
+  if (s == 0.0) return d == 1.0 ? s : T(0.0);
   const T magnitude = exp(d * log(abs(s)));
   return s < 0.0 ? T(-magnitude) : magnitude;
 }
