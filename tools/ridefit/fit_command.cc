@@ -277,6 +277,7 @@ struct FitPsdFlags {
   double segment_s = 10.0;
   int starts = 1;
   int max_iterations = 50;
+  std::string loss = "none";
   std::string output_file;
   std::string plot_file;
   bool json = false;
@@ -300,6 +301,7 @@ void run_psd(const FitPsdFlags& flags) {
   options.segment_s = flags.segment_s;
   options.starts = flags.starts;
   options.max_iterations = flags.max_iterations;
+  options.loss = flags.loss;
   const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
   if (!fit.converged) {
     throw RunError(fmt::format(
@@ -333,11 +335,19 @@ void run_psd(const FitPsdFlags& flags) {
     io::draw_figure(figure, flags.plot_file);
   }
   if (flags.json) {
-    nlohmann::json j = {{"converged", fit.converged},
-                        {"termination", fit.termination},
-                        {"iterations", fit.iterations},
-                        {"final_cost", fit.final_cost},
-                        {"parameters", nlohmann::json::array()}};
+    nlohmann::json j = {
+        {"converged", fit.converged},           {"termination", fit.termination},
+        {"iterations", fit.iterations},         {"final_cost", fit.final_cost},
+        {"unidentifiable", fit.unidentifiable}, {"identifiability_note", fit.identifiability_note},
+        {"parameters", nlohmann::json::array()}};
+    nlohmann::json correlation = nlohmann::json::array();
+    for (Eigen::Index a = 0; a < fit.correlation.rows(); ++a) {
+      std::vector<double> row;
+      for (Eigen::Index b = 0; b < fit.correlation.cols(); ++b)
+        row.push_back(fit.correlation(a, b));
+      correlation.push_back(row);
+    }
+    j["correlation"] = correlation;
     for (std::size_t i = 0; i < fit.names.size(); ++i) {
       j["parameters"].push_back(
           {{"name", fit.names[i]},
@@ -354,6 +364,9 @@ void run_psd(const FitPsdFlags& flags) {
     std::cout << fmt::format(
         "  {:<30} {:>14.6g}  ± {}\n", fit.names[i], fit.values[i],
         fit.standard_errors[i] ? fmt::format("{:.3g}", *fit.standard_errors[i]) : "-");
+  }
+  if (!fit.identifiability_note.empty()) {
+    std::cout << "warning: " << fit.identifiability_note << "\n";
   }
   if (!flags.output_file.empty()) std::cout << "Fitted model: " << flags.output_file << "\n";
   if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
@@ -437,6 +450,10 @@ void register_fit(CLI::App& app) {
       ->capture_default_str();
   psd_command->add_option("--starts", psd->starts, "Multi-start: number of starting points")
       ->check(CLI::Range(1, 50))
+      ->capture_default_str();
+  psd_command
+      ->add_option("--loss", psd->loss, "Robust loss on the log-PSD residuals: none, huber, cauchy")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
       ->capture_default_str();
   psd_command->add_option("--max-iterations", psd->max_iterations, "Solver iterations at most")
       ->check(CLI::Range(1, 10000))

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <complex>
+#include <set>
 #include <unsupported/Eigen/FFT>
 
 #include "ridefit/io/csv_table.h"
@@ -338,7 +339,10 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
         new PsdCost(m, car, fields, units, welch, body_log, wheel_log, options.steps_per_sample);
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
-    problem.AddResidualBlock(cost, nullptr, blocks);
+    ceres::LossFunction* loss = nullptr;
+    if (options.loss == "huber") loss = new ceres::HuberLoss(options.loss_scale);
+    if (options.loss == "cauchy") loss = new ceres::CauchyLoss(options.loss_scale);
+    problem.AddResidualBlock(cost, loss, blocks);
     for (std::size_t i = 0; i < fields.size(); ++i) {
       problem.SetParameterLowerBound(&x[i], 0, bounds[i].first / units[i]);
       problem.SetParameterUpperBound(&x[i], 0, bounds[i].second / units[i]);
@@ -363,19 +367,58 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
     covariance_options.algorithm_type = ceres::DENSE_SVD;
     ceres::Covariance covariance(covariance_options);
     std::vector<std::pair<const double*, const double*>> pairs;
-    for (double& v : x) pairs.emplace_back(&v, &v);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      for (std::size_t j = i; j < x.size(); ++j) pairs.emplace_back(&x[i], &x[j]);
+    }
     const bool have = dof > 0 && covariance.Compute(pairs, &problem);
+    const auto k = static_cast<Eigen::Index>(fields.size());
+    Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(k, k);
+    if (have) {
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        for (std::size_t j = i; j < x.size(); ++j) {
+          double c = 0.0;
+          covariance.GetCovarianceBlock(&x[i], &x[j], &c);
+          const auto a = static_cast<Eigen::Index>(i), b = static_cast<Eigen::Index>(j);
+          cov(a, b) = cov(b, a) = s2 * c * units[i] * units[j];
+        }
+      }
+      result.correlation = cov;
+      for (Eigen::Index a = 0; a < k; ++a) {
+        for (Eigen::Index b = 0; b < k; ++b) {
+          result.correlation(a, b) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
+        }
+      }
+    }
     result.fitted = car.parameters();
+    std::set<std::size_t> weak;
     for (std::size_t i = 0; i < fields.size(); ++i) {
       const double value = x[i] * units[i];
       result.values.push_back(value);
       field(result.fitted, fields[i]) = value;
-      double c = 0.0;
-      if (have && covariance.GetCovarianceBlock(&x[i], &x[i], &c)) {
-        result.standard_errors.push_back(std::sqrt(s2 * c) * units[i]);
+      const auto a = static_cast<Eigen::Index>(i);
+      if (have) {
+        result.standard_errors.push_back(std::sqrt(cov(a, a)));
+        // The same rules as the hysteresis fit: SE above half the value, or |ρ| > 0.995.
+        if (std::sqrt(cov(a, a)) > 0.5 * std::abs(value)) weak.insert(i);
+        for (Eigen::Index b = a + 1; b < k; ++b) {
+          if (std::abs(result.correlation(a, b)) > 0.995) {
+            weak.insert(i);
+            weak.insert(static_cast<std::size_t>(b));
+          }
+        }
       } else {
         result.standard_errors.push_back(std::nullopt);
+        weak.insert(i);  // no covariance: the Jacobian is rank-deficient at the optimum
       }
+    }
+    for (std::size_t i : weak) result.unidentifiable.push_back(options.free[i]);
+    if (!weak.empty()) {
+      std::string list;
+      for (const auto& name : result.unidentifiable) list += (list.empty() ? "" : ", ") + name;
+      result.identifiability_note = fmt::format(
+          "the spectra cannot determine {} (a standard error above half the value, a correlation "
+          "above 0.995, or a rank-deficient Jacobian): fix {} or widen the band",
+          list, weak.size() > 1 ? "some of them" : "it");
     }
     best = std::move(result);
   }

@@ -10,6 +10,8 @@
 
 #include <ceres/cost_function.h>
 
+#include <Eigen/Core>
+
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/road/road_input.h"
 
@@ -41,12 +43,17 @@ struct PsdFitOptions {
   int steps_per_sample = 1;
   int max_iterations = 50;
   int starts = 1;  // multi-start: also start at these many spread points within the bounds
+  std::string loss = "none";  // none | huber | cauchy, on the log-PSD residuals
+  double loss_scale = 0.5;    // in natural-log units: a factor e^0.5 = 1.65 in PSD
 };
 
 struct PsdFitResult {
   std::vector<std::string> names;
   std::vector<double> values;
   std::vector<std::optional<double>> standard_errors;
+  Eigen::MatrixXd correlation;  // of the free parameters; empty when not computable
+  std::vector<std::string> unidentifiable;
+  std::string identifiability_note;
   double final_cost = 0.0;
   int iterations = 0;
   bool converged = false;
