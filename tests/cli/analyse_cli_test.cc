@@ -117,7 +117,7 @@ TEST_F(AnalyseCli, LevelsGiveTheCorrelationAndThePerLevelSpectra) {
   }
   EXPECT_TRUE(found) << run.output;
   const io::CsvTable table = io::CsvTable::read(psd);
-  EXPECT_TRUE(table.has("body_acc_psd_friction_N_40"));
+  EXPECT_TRUE(table.has("body_acc_psd_run3_friction_N_40"));
   EXPECT_GT(fs::file_size(plot), 1000u);
 }
 
@@ -149,6 +149,17 @@ TEST_F(AnalyseCli, BadInputsAreNamedWithExitCode2AndNoOutput) {
   expect_bad_input(good + " --levels 1,2", "one level per file");
   expect_bad_input(good + " --band 30,1", "band");
   expect_bad_input(good + " --smooth 4", "odd");
+  expect_bad_input(good + " --smooth 1001", "at most 101");
+  expect_bad_input(good + " " + good, "given twice");
+  expect_bad_input(good + " --channel body_acc --channel body_acc", "asked for twice");
+  const std::string other = recording("other.csv", 1.0);
+  expect_bad_input(good + " " + other + " " + recording("third.csv", 2.0) + " --levels nan,1,2",
+                   "not a finite number");
+  expect_bad_input(good + " " +
+                       write("unit2.csv",
+                             "time[s],body_acc[m],travel[m],tyre_force[N]\n0,0,0,0\n"
+                             "0.001,1,0,0\n0.002,2,0,0\n"),
+                   "must measure the same quantity");
   expect_bad_input(good + " --level-name 'a b' --levels 1", "--level-name");
   expect_bad_input(good + " --plot " + (dir_ / "figure.pdf").string(), ".png or .svg");
   expect_bad_input(write("gap.csv",

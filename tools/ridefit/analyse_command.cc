@@ -182,6 +182,14 @@ void write_psd_csv(const study::RecordingAnalysis& analysis, const AnalyseFlags&
   table.add("frequency", "Hz", analysis.spectra.front().psd.frequency_Hz);
   for (std::size_t c = 0; c < analysis.spectra.size(); ++c) {
     const auto& s = analysis.spectra[c];
+    try {
+      io::unit_to_si(s.psd_unit);
+    } catch (const InputError&) {
+      throw InputError(fmt::format(
+          "--psd: channel {} is in a unit whose PSD unit ({}) a CSV cannot carry; leave it out "
+          "with --channel",
+          s.name, s.psd_unit));
+    }
     if (flags.levels.empty()) {
       table.add(s.name + "_psd", s.psd_unit, s.psd.psd);
       table.add(s.name + "_psd_lower", s.psd_unit, s.interval.lower);
@@ -189,8 +197,10 @@ void write_psd_csv(const study::RecordingAnalysis& analysis, const AnalyseFlags&
       continue;
     }
     for (std::size_t r = 0; r < analysis.recordings.size(); ++r) {
-      table.add(fmt::format("{}_psd_{}_{:g}", s.name, flags.level_name, flags.levels[r]),
-                s.psd_unit, analysis.recordings[r].channels[c].psd.psd);
+      // The run number keeps names unique when runs share a level (replicates).
+      table.add(
+          fmt::format("{}_psd_run{}_{}_{:g}", s.name, r + 1, flags.level_name, flags.levels[r]),
+          s.psd_unit, analysis.recordings[r].channels[c].psd.psd);
     }
   }
   table.write(flags.psd_file);
@@ -297,15 +307,22 @@ void run(const AnalyseFlags& flags) {
                     "the order of the files",
                     flags.levels.size(), flags.files.size()));
   }
+  for (double level : flags.levels) {
+    if (!std::isfinite(level)) {
+      throw InputError(fmt::format("--levels: {} is not a finite number", level));
+    }
+  }
   std::vector<study::Recording> recordings;
   for (const auto& file : flags.files) recordings.push_back(study::load_recording(file));
   const study::RecordingAnalysis analysis = study::analyse_recordings(recordings, options);
   std::vector<study::LevelCorrelation> correlations;
   if (!flags.levels.empty()) correlations = study::correlate_with_levels(analysis, flags.levels);
 
-  if (!flags.psd_file.empty()) write_psd_csv(analysis, flags);
+  // The figure first: it is the output that can still fail (gnuplot), and a failed run must
+  // leave no file behind.
   if (!flags.plot_file.empty())
     io::draw_figure(figure_of(analysis, flags, correlations, options), flags.plot_file);
+  if (!flags.psd_file.empty()) write_psd_csv(analysis, flags);
 
   if (flags.json) {
     nlohmann::json j;

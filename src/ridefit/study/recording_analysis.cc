@@ -62,7 +62,9 @@ WeightedValues weighted_values(comfort::Weighting weighting, const std::vector<d
   const std::vector<double> weighted = comfort::apply_weighting(weighting, centred, sample_rate_Hz);
   result.metrics = comfort::vibration_metrics(weighted, sample_rate_Hz, integration_time_s);
   result.additional_methods = comfort::check_additional_methods(result.metrics);
-  if (weighting != comfort::Weighting::kWe) {
+  // Annex C's comfort reactions are for translational comfort weightings (not We, rotational,
+  // nor Wf, motion sickness); the caller passes m/s² channels only.
+  if (weighting != comfort::Weighting::kWe && weighting != comfort::Weighting::kWf) {
     result.reactions = comfort::comfort_reactions(result.metrics.weighted_rms_m_per_s2);
   }
   return result;
@@ -81,6 +83,7 @@ ChannelMetrics channel_metrics(const Recording& recording, const io::CsvColumn& 
   if (const auto weighting = weighting_for(column, options.weighting)) {
     m.weighted = weighted_values(*weighting, column.values, recording.sample_rate_Hz,
                                  options.integration_time_s);
+    if (column.unit != "m/s^2") m.weighted->reactions.clear();
   }
   if (column.name == "tyre_force" && options.static_tyre_load_N) {
     m.tyre_load = comfort::tyre_load_metrics(column.values, *options.static_tyre_load_N);
@@ -121,6 +124,11 @@ void RecordingAnalysisOptions::validate() const {
     throw InputError(
         fmt::format("confidence {}: expected a level in (0, 1), e.g. 0.9", confidence));
   }
+  if (smoothing_bins > 101) {
+    throw InputError(fmt::format(
+        "smoothing over {} bins: at most 101 (a longer Welch segment gives finer bins instead)",
+        smoothing_bins));
+  }
   if (smoothing_bins == 0 || smoothing_bins % 2 == 0) {
     throw InputError(
         fmt::format("smoothing over {} bins: expected an odd number of bins (1 = no smoothing)",
@@ -147,6 +155,32 @@ RecordingAnalysis analyse_recordings(std::span<const Recording> recordings,
         "band {},{} Hz: starts above the Nyquist frequency {:.6g} Hz of {}", options.band_low_Hz,
         options.band_high_Hz, nyquist_Hz, recordings.front().source.string()));
   }
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    for (std::size_t d = c + 1; d < names.size(); ++d) {
+      if (names[c] == names[d]) {
+        throw InputError(fmt::format("channel {} is asked for twice; give it once", names[c]));
+      }
+    }
+  }
+  for (std::size_t r = 0; r < recordings.size(); ++r) {
+    for (std::size_t q = r + 1; q < recordings.size(); ++q) {
+      if (recordings[r].source == recordings[q].source) {
+        throw InputError(
+            fmt::format("{} is given twice; a repeated file would count as an independent record",
+                        recordings[r].source.string()));
+      }
+    }
+    for (const auto& name : names) {
+      const auto& unit = recordings[r].table.column(name).unit;
+      const auto& first = recordings.front().table.column(name).unit;
+      if (unit != first) {
+        throw InputError(fmt::format(
+            "{}: channel {} is in {}, but in {} it is in {}; the files "
+            "must measure the same quantity",
+            recordings[r].source.string(), name, unit, recordings.front().source.string(), first));
+      }
+    }
+  }
   RecordingAnalysis analysis;
   std::vector<std::vector<signal::PowerSpectralDensity>> spectra(names.size());
   std::vector<std::string> sources;
@@ -168,6 +202,12 @@ RecordingAnalysis analyse_recordings(std::span<const Recording> recordings,
       }
       try {
         metrics.channels.push_back(channel_metrics(recording, column, psd, options));
+        for (const auto& [metric, value] : named_metrics(metrics.channels.back())) {
+          if (!std::isfinite(value)) {
+            throw InputError(fmt::format(
+                "{} overflows ({}); the values are out of range for this analysis", metric, value));
+          }
+        }
       } catch (const InputError& e) {
         const std::string message = e.what();
         if (message.starts_with(recording.source.string())) throw;
@@ -246,7 +286,10 @@ std::vector<LevelCorrelation> correlate_with_levels(const RecordingAnalysis& ana
         row.values.push_back(named_metrics(recording.channels[c])[m].second);
       }
       const signal::LinearCorrelation fit = signal::linear_correlation(row.levels, row.values);
-      if (!fit.pearson_r) continue;  // constant metric: nothing to correlate
+      // A metric constant up to round-off has nothing to correlate (R of noise is meaningless).
+      const auto [lo, hi] = std::minmax_element(row.values.begin(), row.values.end());
+      const double size = std::max(std::abs(*lo), std::abs(*hi));
+      if (!fit.pearson_r || !(*hi - *lo > 1e-9 * size)) continue;
       row.pearson_r = *fit.pearson_r;
       row.slope = fit.slope;
       row.relative_increase = fit.relative_increase;
