@@ -412,7 +412,7 @@ void register_analyse(CLI::App& app) {
       ->add_option("--segment", flags->segment_s,
                    "Welch segment length [s] (default: 8 segments over the record)")
       ->check(positive_number("s"));
-  command->add_option("--overlap", flags->overlap, "Welch segment overlap, in [0, 1)")
+  command->add_option("--overlap", flags->overlap, "Welch segment overlap, in [0, 0.95]")
       ->check(CLI::Range(0.0, 0.95))
       ->capture_default_str();
   command->add_option("--detrend", flags->detrend, "Per-segment detrending: none, mean, linear")

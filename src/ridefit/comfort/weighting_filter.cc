@@ -18,7 +18,8 @@ signal::BiquadCascade weighting_filter(Weighting weighting, double sample_rate_H
   if (!std::isfinite(sample_rate_Hz) || sample_rate_Hz < minimum_Hz) {
     throw InputError(fmt::format(
         "{} weighting: sample rate {} Hz is too low; it needs at least {} Hz (5 × its {} Hz band "
-        "limit) for the time-domain filter to stay within 0.5 dB of ISO 2631-1 Annex A up to {} "
+        "limit) for the time-domain filter to stay within about 0.5 dB (0.51 dB for Wk) of ISO "
+        "2631-1 Annex A up to {} "
         "Hz; resample the signal to {} Hz or more",
         to_string(weighting), sample_rate_Hz, minimum_Hz, weighting_parameters(weighting).f2_Hz,
         0.8 * weighting_parameters(weighting).f2_Hz, minimum_Hz));

@@ -22,7 +22,7 @@ namespace ridefit::comfort {
 //                                            (27 Hz at 500 Hz, 55 Hz at 1 kHz, 100 Hz at 2 kHz);
 //   fs = 10·f2 (1 kHz for the 100 Hz band limit): ≤ 1.5 % (0.13 dB) up to 0.8·f2 (80 Hz);
 //                                                 Wf ≤ 3 % up to 0.8·f2 (0.5 Hz);
-//   fs = 5·f2 (500 Hz), the lowest accepted rate: ≤ 6 % (0.5 dB) up to 0.8·f2;
+//   fs = 5·f2 (500 Hz), the lowest accepted rate: ≤ 6 % (0.51 dB for Wk at 80 Hz) up to 0.8·f2;
 //                                                 Wf ≤ 11 % (0.9 dB).
 // Sample at 10·f2 or faster where the top of the band matters; the error is a smooth droop,
 // so metrics dominated by the 1–20 Hz region (ride comfort) are far more accurate than that.

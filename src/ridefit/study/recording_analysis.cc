@@ -94,6 +94,13 @@ ChannelMetrics channel_metrics(const Recording& recording, const io::CsvColumn& 
   if (options.impact_hardness && is_acceleration(column.unit)) {
     try {
       m.impact = comfort::impact_hardness(column.values, recording.sample_rate_Hz);
+      // impact_hardness counts from the record's first sample; report times on its time axis.
+      const double t0 = recording.table.time_s().front();
+      m.impact->onset_time_s += t0;
+      for (auto* peak : {&m.impact->first_positive_peak, &m.impact->first_negative_peak,
+                         &m.impact->second_negative_peak}) {
+        peak->time_s += t0;
+      }
     } catch (const InputError& e) {
       throw InputError(
           fmt::format("{}: channel {}: {}", recording.source.string(), column.name, e.what()));
