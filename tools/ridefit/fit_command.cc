@@ -26,6 +26,17 @@
 namespace ridefit::cli {
 namespace {
 
+// A correlation matrix as rows of numbers (empty when it could not be computed).
+nlohmann::json correlation_json(const Eigen::MatrixXd& correlation) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index a = 0; a < correlation.rows(); ++a) {
+    std::vector<double> row;
+    for (Eigen::Index b = 0; b < correlation.cols(); ++b) row.push_back(correlation(a, b));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 struct FitHysteresisFlags {
   std::vector<std::string> files;
   std::string model_file;
@@ -208,14 +219,7 @@ void run(const FitHysteresisFlags& flags) {
            {"standard_error",
             p.standard_error ? nlohmann::json(*p.standard_error) : nlohmann::json()}});
     }
-    nlohmann::json correlation = nlohmann::json::array();
-    for (Eigen::Index a = 0; a < fit.correlation.rows(); ++a) {
-      std::vector<double> row;
-      for (Eigen::Index b = 0; b < fit.correlation.cols(); ++b)
-        row.push_back(fit.correlation(a, b));
-      correlation.push_back(row);
-    }
-    j["correlation"] = correlation;
+    j["correlation"] = correlation_json(fit.correlation);
     j["calibration_friction_N"] = nlohmann::json::array();
     for (std::size_t r = 0; r < records.size(); ++r) {
       j["calibration_friction_N"].push_back(
@@ -340,14 +344,7 @@ void run_psd(const FitPsdFlags& flags) {
         {"iterations", fit.iterations},         {"final_cost", fit.final_cost},
         {"unidentifiable", fit.unidentifiable}, {"identifiability_note", fit.identifiability_note},
         {"parameters", nlohmann::json::array()}};
-    nlohmann::json correlation = nlohmann::json::array();
-    for (Eigen::Index a = 0; a < fit.correlation.rows(); ++a) {
-      std::vector<double> row;
-      for (Eigen::Index b = 0; b < fit.correlation.cols(); ++b)
-        row.push_back(fit.correlation(a, b));
-      correlation.push_back(row);
-    }
-    j["correlation"] = correlation;
+    j["correlation"] = correlation_json(fit.correlation);
     for (std::size_t i = 0; i < fit.names.size(); ++i) {
       j["parameters"].push_back(
           {{"name", fit.names[i]},

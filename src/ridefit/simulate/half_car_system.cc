@@ -5,7 +5,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
-#include <unsupported/Eigen/AutoDiff>
+#include <type_traits>
+
+#include "ridefit/simulate/autodiff_jacobian.h"
 
 #include "ridefit/io/input_error.h"
 
@@ -13,8 +15,6 @@ namespace ridefit::simulate {
 namespace {
 
 constexpr int kMaxStates = 2 * model::kHalfCarDofs + 4;
-using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxStates, 1>;
-using AutoDiff = Eigen::AutoDiffScalar<Gradient>;
 
 }  // namespace
 
@@ -55,21 +55,14 @@ bool HalfCarSystem::derivatives(double t_s, const double* x, double* xdot) const
 }
 
 bool HalfCarSystem::jacobian(double t_s, const double* x, double* jacobian_column_major) const {
-  const int n = size();
-  AutoDiff xa[kMaxStates];
-  AutoDiff fa[kMaxStates];
-  for (int i = 0; i < n; ++i) xa[i] = AutoDiff(x[i], n, i);
-  car_.derivatives(xa, roads_.at(t_s), car_.parameters().cast<AutoDiff>(), fa);
-  for (int row = 0; row < n; ++row) {
-    const Gradient& g = fa[row].derivatives();
-    for (int col = 0; col < n; ++col) {
-      // A constant output may carry an empty derivative vector.
-      const double value = g.size() == n ? g[col] : 0.0;
-      if (!std::isfinite(value)) return false;
-      jacobian_column_major[col * n + row] = value;
-    }
-  }
-  return true;
+  const auto input = roads_.at(t_s);
+  return autodiff_jacobian<kMaxStates>(
+      size(), x,
+      [&](const auto* xa, auto* fa) {
+        using AutoDiff = std::remove_cvref_t<decltype(*xa)>;
+        car_.derivatives(xa, input, car_.parameters().template cast<AutoDiff>(), fa);
+      },
+      jacobian_column_major);
 }
 
 double HalfCarSystem::typical_magnitude(int state_index) const {

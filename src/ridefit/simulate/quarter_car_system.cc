@@ -1,18 +1,17 @@
 #include "ridefit/simulate/quarter_car_system.h"
 
 #include <Eigen/Core>
-#include <unsupported/Eigen/AutoDiff>
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+
+#include "ridefit/simulate/autodiff_jacobian.h"
 
 namespace ridefit::simulate {
 namespace {
 
 constexpr int kMax = model::QuarterCar::kMaxStates;
-// Derivative vectors live on the stack: dynamic size, fixed capacity.
-using Gradient = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMax, 1>;
-using AutoDiff = Eigen::AutoDiffScalar<Gradient>;
 
 }  // namespace
 
@@ -23,24 +22,14 @@ bool QuarterCarSystem::derivatives(double t_s, const double* x, double* xdot) co
 }
 
 bool QuarterCarSystem::jacobian(double t_s, const double* x, double* jacobian_column_major) const {
-  const int n = size();
-  AutoDiff xa[kMax];
-  AutoDiff fa[kMax];
-  for (int i = 0; i < n; ++i) {
-    xa[i] = AutoDiff(x[i], n, i);
-  }
-  car_.derivatives(xa, road_.at(t_s), car_.parameters().cast<AutoDiff>(), fa);
-  for (int row = 0; row < n; ++row) {
-    const Gradient& g = fa[row].derivatives();
-    for (int col = 0; col < n; ++col) {
-      // A constant output (e.g. zs' = vs has no dependence on most states) may carry an
-      // empty derivative vector.
-      const double value = g.size() == n ? g[col] : 0.0;
-      if (!std::isfinite(value)) return false;
-      jacobian_column_major[col * n + row] = value;
-    }
-  }
-  return true;
+  const auto input = road_.at(t_s);
+  return autodiff_jacobian<kMax>(
+      size(), x,
+      [&](const auto* xa, auto* fa) {
+        using AutoDiff = std::remove_cvref_t<decltype(*xa)>;
+        car_.derivatives(xa, input, car_.parameters().template cast<AutoDiff>(), fa);
+      },
+      jacobian_column_major);
 }
 
 double QuarterCarSystem::typical_magnitude(int state_index) const {
