@@ -13,6 +13,7 @@ void register_analyse(CLI::App& app);
 void register_sweep(CLI::App& app);
 void register_fit(CLI::App& app);
 void register_generate_lab(CLI::App& app);
+void register_optimise(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
@@ -22,6 +23,7 @@ inline void register_subcommands(CLI::App& app) {
   register_sweep(app);
   register_fit(app);
   register_generate_lab(app);
+  register_optimise(app);
 }
 
 }  // namespace ridefit::cli

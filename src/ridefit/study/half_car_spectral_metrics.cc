@@ -43,7 +43,11 @@ HalfCarSpectra half_car_spectra(const model::HalfCar& car, const road::RoadSpect
 
 HalfCarMetrics half_car_spectral_metrics(const model::HalfCar& car, const road::RoadSpectrum& road,
                                          std::size_t points) {
-  const HalfCarSpectra spectra = half_car_spectra(car, road, points);
+  return half_car_spectral_metrics(half_car_spectra(car, road, points), car.parameters());
+}
+
+HalfCarMetrics half_car_spectral_metrics(const HalfCarSpectra& spectra,
+                                         const model::HalfCarParameters<double>& parameters) {
   const auto& f = spectra.frequency_Hz;
   // ∫ S df = ∫ S·f d(ln f), trapezoid on the log grid.
   auto integral = [&](HalfCarLinearOutput y, const comfort::Weighting* weighting) {
@@ -74,7 +78,7 @@ HalfCarMetrics half_car_spectral_metrics(const model::HalfCar& car, const road::
   m.rear_travel_rms_m = integral(simulate::kRearTravel, nullptr);
   m.front_tyre_force_rms_N = integral(simulate::kFrontTyreForce, nullptr);
   m.rear_tyre_force_rms_N = integral(simulate::kRearTyreForce, nullptr);
-  const auto [front_load, rear_load] = static_wheel_loads_N(car.parameters());
+  const auto [front_load, rear_load] = static_wheel_loads_N(parameters);
   m.front_dynamic_load_ratio = m.front_tyre_force_rms_N / front_load;
   m.rear_dynamic_load_ratio = m.rear_tyre_force_rms_N / rear_load;
   return m;

@@ -30,4 +30,8 @@ HalfCarSpectra half_car_spectra(const model::HalfCar& car, const road::RoadSpect
 HalfCarMetrics half_car_spectral_metrics(const model::HalfCar& car, const road::RoadSpectrum& road,
                                          std::size_t points = 1000);
 
+// The same figures from spectra already computed for `parameters` (static loads come from them).
+HalfCarMetrics half_car_spectral_metrics(const HalfCarSpectra& spectra,
+                                         const model::HalfCarParameters<double>& parameters);
+
 }  // namespace ridefit::study

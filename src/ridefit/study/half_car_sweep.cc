@@ -1,5 +1,7 @@
 #include "ridefit/study/half_car_sweep.h"
 
+#include "ridefit/io/value_range.h"
+
 #include <fmt/core.h>
 
 #include <cmath>
@@ -20,30 +22,6 @@ namespace ridefit::study {
 namespace {
 
 constexpr std::size_t kMaxRuns = 100000;
-constexpr long kMaxAxisCount = 10000;
-
-std::vector<double> read_range(const io::YamlMap& range) {
-  const double from = range.number("from");
-  const double to = range.number("to");
-  const long count = range.integer("count");
-  if (count < 1 || count > kMaxAxisCount) {
-    throw InputError(
-        fmt::format("{} is {}, expected 1 … {}", range.locate("count"), count, kMaxAxisCount));
-  }
-  const std::string spacing = range.choice("spacing", {"linear", "log"});
-  if (spacing == "log" && !(from > 0.0 && to > 0.0)) {
-    throw InputError(fmt::format("{}: log spacing needs from > 0 and to > 0 (got {} and {})",
-                                 range.locate("spacing"), from, to));
-  }
-  range.finish();
-  std::vector<double> values;
-  for (long i = 0; i < count; ++i) {
-    const double s = count == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(count - 1);
-    values.push_back(spacing == "log" ? from * std::pow(to / from, s) : from + s * (to - from));
-  }
-  values.back() = count == 1 ? from : to;  // exact ends
-  return values;
-}
 
 SweepAxis read_axis(const io::YamlMap& entry, const std::filesystem::path& model) {
   SweepAxis axis;
@@ -63,7 +41,7 @@ SweepAxis read_axis(const io::YamlMap& entry, const std::filesystem::path& model
     throw InputError(fmt::format("{}: give exactly one of `values` (a list) and `range`",
                                  entry.locate("parameter")));
   }
-  axis.values = values ? entry.numbers("values") : read_range(entry.map("range"));
+  axis.values = values ? entry.numbers("values") : io::read_value_range(entry.map("range"));
   entry.finish();
   return axis;
 }

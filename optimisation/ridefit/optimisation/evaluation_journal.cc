@@ -1,0 +1,168 @@
+#include "ridefit/optimisation/evaluation_journal.h"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::optimisation {
+namespace {
+
+constexpr const char* kFormat = "ridefit-optimise-journal-1";
+
+std::string read_all(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot be read", path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+JournalRecord record_of(const nlohmann::json& j) {
+  JournalRecord r;
+  r.variant = j.at("variant").get<std::string>();
+  r.x = j.at("x").get<std::vector<double>>();
+  r.case_values = j.at("cases").get<std::vector<std::vector<double>>>();
+  r.frequency_domain = j.at("frequency_domain").get<std::vector<bool>>();
+  if (r.case_values.size() != r.frequency_domain.size())
+    throw std::runtime_error("case counts differ");
+  return r;
+}
+
+std::string json_number(double v) { return fmt::format("{:.17g}", v); }
+
+}  // namespace
+
+EvaluationJournal::EvaluationJournal(std::filesystem::path path, std::ofstream out)
+    : path_(std::move(path)), out_(std::move(out)) {}
+
+EvaluationJournal::EvaluationJournal(EvaluationJournal&& other) noexcept
+    : path_(std::move(other.path_)),
+      out_(std::move(other.out_)),
+      records_(std::move(other.records_)) {}
+
+std::string EvaluationJournal::key(const std::string& variant, std::span<const double> x) {
+  std::string k = variant;
+  for (double v : x) k += fmt::format("|{:.17g}", v);
+  return k;
+}
+
+EvaluationJournal EvaluationJournal::create(const std::filesystem::path& path,
+                                            const std::string& fingerprint) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw InputError(fmt::format("journal {}: cannot be written", path.string()));
+  out << nlohmann::json{{"format", kFormat}, {"study", fingerprint}}.dump() << "\n" << std::flush;
+  return EvaluationJournal(path, std::move(out));
+}
+
+EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
+                                            const std::string& fingerprint) {
+  if (!std::filesystem::is_regular_file(path)) {
+    throw InputError(fmt::format("--resume {}: no such journal file", path.string()));
+  }
+  std::string text = read_all(path);
+  // A run killed while writing leaves a line without its newline: cut it off.
+  const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+  if (complete < text.size()) {
+    text.resize(complete);
+    std::filesystem::resize_file(path, complete);
+  }
+  std::istringstream lines(text);
+  std::string line;
+  std::map<std::string, JournalRecord> records;
+  std::size_t number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    nlohmann::json j;
+    try {
+      j = nlohmann::json::parse(line);
+    } catch (const nlohmann::json::exception&) {
+      throw InputError(fmt::format("--resume {}: line {} is not JSON; is this a ridefit journal?",
+                                   path.string(), number));
+    }
+    if (number == 1) {
+      if (!j.is_object() || j.value("format", "") != kFormat) {
+        throw InputError(
+            fmt::format("--resume {}: not a ridefit optimise journal (line 1 has no "
+                        "\"format\": \"{}\")",
+                        path.string(), kFormat));
+      }
+      if (j.value("study", "") != fingerprint) {
+        throw InputError(fmt::format(
+            "--resume {}: the journal belongs to another study or to different model or road "
+            "files (fingerprint {} here, {} in the journal); start without --resume",
+            path.string(), fingerprint, j.value("study", "")));
+      }
+      continue;
+    }
+    try {
+      JournalRecord r = record_of(j);
+      records[key(r.variant, r.x)] = std::move(r);
+    } catch (const std::exception& e) {
+      throw InputError(fmt::format("--resume {}: line {} is not an evaluation ({})", path.string(),
+                                   number, e.what()));
+    }
+  }
+  if (number == 0) {
+    throw InputError(fmt::format("--resume {}: the journal is empty", path.string()));
+  }
+  std::ofstream out(path, std::ios::app);
+  if (!out) throw InputError(fmt::format("--resume {}: cannot be appended to", path.string()));
+  EvaluationJournal journal(path, std::move(out));
+  journal.records_ = std::move(records);
+  return journal;
+}
+
+std::optional<JournalRecord> EvaluationJournal::find(const std::string& variant,
+                                                     std::span<const double> x) const {
+  std::lock_guard lock(mutex_);
+  const auto it = records_.find(key(variant, x));
+  if (it == records_.end()) return std::nullopt;
+  return it->second;
+}
+
+void EvaluationJournal::append(const JournalRecord& r) {
+  // Numbers are formatted by hand: 17 significant digits round-trip every double.
+  auto numbers = [](std::span<const double> values) {
+    std::vector<std::string> texts;
+    for (double v : values) texts.push_back(json_number(v));
+    return fmt::format("[{}]", fmt::join(texts, ","));
+  };
+  std::vector<std::string> cases, domains;
+  for (const auto& values : r.case_values) cases.push_back(numbers(values));
+  for (bool f : r.frequency_domain) domains.push_back(f ? "true" : "false");
+  const std::string line =
+      fmt::format("{{\"variant\":{},\"x\":{},\"cases\":[{}],\"frequency_domain\":[{}]}}\n",
+                  nlohmann::json(r.variant).dump(), numbers(r.x), fmt::join(cases, ","),
+                  fmt::join(domains, ","));
+  std::lock_guard lock(mutex_);
+  out_ << line << std::flush;
+  if (!out_) throw RunError(fmt::format("journal {}: write failed", path_.string()));
+  records_[key(r.variant, r.x)] = r;
+}
+
+std::size_t EvaluationJournal::size() const {
+  std::lock_guard lock(mutex_);
+  return records_.size();
+}
+
+std::string study_fingerprint(const TuningStudy& study) {
+  std::uint64_t hash = 1469598103934665603ULL;
+  auto add = [&](const std::filesystem::path& path) {
+    for (unsigned char c : read_all(path)) {
+      hash ^= c;
+      hash *= 1099511628211ULL;
+    }
+  };
+  add(study.study_file);
+  add(study.model_file);
+  if (!study.fitted_model.empty()) add(study.fitted_model);
+  for (const auto& c : study.load_cases) add(c.road_file);
+  return fmt::format("{:016x}", hash);
+}
+
+}  // namespace ridefit::optimisation

@@ -1,0 +1,280 @@
+#include "ridefit/optimisation/nlopt_tuner.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <nlopt.hpp>
+#include <random>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::optimisation {
+namespace {
+
+// Physical value of variable v at unit coordinate u, and back.
+double to_physical(const DesignVariable& v, double u) {
+  u = std::clamp(u, 0.0, 1.0);
+  if (v.log_scale) return v.lower * std::pow(v.upper / v.lower, u);
+  return v.lower + u * (v.upper - v.lower);
+}
+
+double to_unit(const DesignVariable& v, double x) {
+  if (v.log_scale) return std::log(x / v.lower) / std::log(v.upper / v.lower);
+  return (x - v.lower) / (v.upper - v.lower);
+}
+
+const char* result_name(nlopt::result r) {
+  switch (r) {
+    case nlopt::SUCCESS:
+      return "success";
+    case nlopt::STOPVAL_REACHED:
+      return "stopval_reached";
+    case nlopt::FTOL_REACHED:
+      return "ftol_reached";
+    case nlopt::XTOL_REACHED:
+      return "xtol_reached";
+    case nlopt::MAXEVAL_REACHED:
+      return "maxeval_reached";
+    case nlopt::MAXTIME_REACHED:
+      return "maxtime_reached";
+    case nlopt::ROUNDOFF_LIMITED:
+      return "roundoff_limited";
+    case nlopt::FORCED_STOP:
+      return "forced_stop";
+    default:
+      return "failure";
+  }
+}
+
+void set_stopping(nlopt::opt& opt, const OptimiserSettings& s) {
+  opt.set_xtol_abs(s.x_tolerance);
+  opt.set_ftol_rel(s.f_tolerance);
+  opt.set_maxeval(s.max_evaluations);
+  if (s.max_time_s > 0.0) opt.set_maxtime(s.max_time_s);
+}
+
+// The optimiser for the study's algorithm; `constrained` wraps the ones without native
+// inequality constraints in AUGLAG.
+nlopt::opt make_optimiser(const OptimiserSettings& s, unsigned n, bool constrained) {
+  auto local = [&](nlopt::algorithm a) {
+    nlopt::opt o(a, n);
+    set_stopping(o, s);
+    o.set_initial_step(s.initial_step);
+    return o;
+  };
+  auto wrap = [&](const nlopt::opt& inner) {
+    if (!constrained) return inner;
+    nlopt::opt outer(nlopt::AUGLAG, n);
+    set_stopping(outer, s);
+    outer.set_local_optimizer(inner);
+    return outer;
+  };
+  switch (s.algorithm) {
+    case Algorithm::kCobyla:
+      return local(nlopt::LN_COBYLA);
+    case Algorithm::kBobyqa:
+      return wrap(local(nlopt::LN_BOBYQA));
+    case Algorithm::kIsres: {
+      nlopt::opt o(nlopt::GN_ISRES, n);
+      set_stopping(o, s);
+      return o;
+    }
+    case Algorithm::kDirectL: {
+      nlopt::opt o(nlopt::GN_DIRECT_L, n);
+      set_stopping(o, s);
+      return wrap(o);
+    }
+    case Algorithm::kMlsl: {
+      nlopt::opt o(nlopt::G_MLSL_LDS, n);
+      set_stopping(o, s);
+      o.set_local_optimizer(local(nlopt::LN_BOBYQA));
+      return wrap(o);
+    }
+  }
+  throw std::logic_error("unknown algorithm");
+}
+
+struct Search {
+  TuningProblem* problem = nullptr;
+  FrictionVariant variant = FrictionVariant::kStudy;
+  const std::vector<double>* limits = nullptr;
+  const ProgressSink* progress = nullptr;
+  OptimisationRun* run = nullptr;
+  Accuracy accuracy = Accuracy::kSearch;
+  int start = 0;
+  std::exception_ptr error;
+  // The last evaluation: NLopt asks for the objective and then the constraints at one x.
+  std::vector<double> last_u;
+  Evaluation last;
+  bool has_best = false;
+  bool best_feasible = false;
+  double best_violation = std::numeric_limits<double>::infinity();
+
+  const Evaluation& at(unsigned n, const double* u) {
+    std::vector<double> unit(u, u + n);
+    if (unit == last_u) return last;
+    const auto& design = problem->study().design;
+    std::vector<double> x(n);
+    for (unsigned i = 0; i < n; ++i) x[i] = to_physical(design[i], unit[i]);
+    last = problem->evaluate(variant, accuracy, x);
+    last_u = unit;
+    record(last);
+    return last;
+  }
+
+  void record(const Evaluation& e) {
+    const double violation = problem->max_violation(e, *limits);
+    const bool feasible = problem->feasible(e, *limits);
+    ++run->evaluations;
+    if (!e.reused) ++run->computed;
+    run->history.push_back({start, e.objective, violation, e.reused});
+    const bool better = !has_best || (feasible && !best_feasible) ||
+                        (feasible == best_feasible && (feasible ? e.objective < run->best.objective
+                                                                : violation < best_violation));
+    if (better) {
+      run->best = e;
+      has_best = true;
+      best_feasible = feasible;
+      best_violation = violation;
+      best_start = start;
+    }
+    if (*progress) {
+      std::string where;
+      for (std::size_t i = 0; i < e.x.size(); ++i) {
+        where += fmt::format("{}{}={:.5g}", i ? " " : "", problem->study().design[i].name, e.x[i]);
+      }
+      (*progress)(fmt::format(
+          "eval {} (start {}{}): {} objective {:.6g}, {}", run->evaluations, start + 1,
+          e.reused ? ", from journal" : "", where, e.objective,
+          feasible ? "limits hold" : fmt::format("limit exceeded by {:.3g} %", 100 * violation)));
+    }
+  }
+  int best_start = 0;
+};
+
+double objective(unsigned n, const double* u, double* grad, void* data) {
+  auto* s = static_cast<Search*>(data);
+  if (grad) throw std::logic_error("derivative-free algorithms only");
+  try {
+    return s->at(n, u).objective;
+  } catch (...) {
+    s->error = std::current_exception();
+    throw nlopt::forced_stop();
+  }
+}
+
+void constraints(unsigned m, double* result, unsigned n, const double* u, double* grad,
+                 void* data) {
+  auto* s = static_cast<Search*>(data);
+  if (grad) throw std::logic_error("derivative-free algorithms only");
+  try {
+    const Evaluation& e = s->at(n, u);
+    for (unsigned i = 0; i < m; ++i) {
+      result[i] = s->problem->normalised_constraint(e, i, *s->limits);
+    }
+  } catch (...) {
+    s->error = std::current_exception();
+    throw nlopt::forced_stop();
+  }
+}
+
+// One NLopt run from unit coordinates `u`; returns NLopt's result as a word.
+std::string run_nlopt(Search& search, const OptimiserSettings& settings, std::vector<double> u) {
+  const TuningStudy& study = search.problem->study();
+  const auto n = static_cast<unsigned>(u.size());
+  nlopt::opt opt = make_optimiser(settings, n, !study.constraints.empty());
+  opt.set_lower_bounds(std::vector<double>(n, 0.0));
+  opt.set_upper_bounds(std::vector<double>(n, 1.0));
+  opt.set_min_objective(objective, &search);
+  if (!study.constraints.empty()) {
+    opt.add_inequality_mconstraint(constraints, &search,
+                                   std::vector<double>(study.constraints.size(), 0.0));
+  }
+  search.last_u.clear();
+  nlopt::srand(settings.seed + static_cast<unsigned long>(search.start));
+  double value = 0.0;
+  try {
+    return result_name(opt.optimize(u, value));
+  } catch (const nlopt::roundoff_limited&) {
+    return "roundoff_limited";
+  } catch (const nlopt::forced_stop&) {
+    if (search.error) std::rethrow_exception(search.error);
+    return "forced_stop";
+  } catch (const std::invalid_argument& e) {
+    throw std::logic_error(fmt::format("NLopt rejected the problem: {}", e.what()));
+  } catch (const std::runtime_error& e) {
+    if (search.error) std::rethrow_exception(search.error);
+    return fmt::format("failure ({})", e.what());
+  }
+}
+
+}  // namespace
+
+std::vector<double> study_start(const TuningStudy& study) {
+  std::vector<double> start;
+  for (const auto& v : study.design) start.push_back(v.start);
+  return start;
+}
+
+OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
+                         const std::vector<double>& limits, const std::vector<double>& start,
+                         const ProgressSink& progress) {
+  const TuningStudy& study = problem.study();
+  const auto n = static_cast<unsigned>(study.design.size());
+  OptimisationRun run;
+  run.variant = variant;
+  run.limits = limits;
+  Search search;
+  search.problem = &problem;
+  search.variant = variant;
+  search.limits = &limits;
+  search.progress = &progress;
+  search.run = &run;
+  std::mt19937_64 random(study.optimiser.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::string> results;
+  for (int s = 0; s < study.optimiser.starts; ++s) {
+    std::vector<double> u(n);
+    for (unsigned i = 0; i < n; ++i) {
+      u[i] = s == 0 ? std::clamp(to_unit(study.design[i], start[i]), 0.0, 1.0) : unit(random);
+    }
+    search.start = s;
+    results.push_back(run_nlopt(search, study.optimiser, u));
+  }
+  run.nlopt_result = results[static_cast<std::size_t>(search.best_start)];
+  // The reported optimum, evaluated again at the verification accuracy.
+  run.verified = problem.evaluate(variant, Accuracy::kVerify, run.best.x);
+  run.feasible = problem.feasible(run.verified, limits);
+  if (!run.feasible && search.best_feasible) {
+    // The optimum sits on a limit that the search accuracy placed slightly differently: polish
+    // it with COBYLA at the verification accuracy, in small steps from where the search ended.
+    OptimiserSettings polish = study.optimiser;
+    polish.algorithm = Algorithm::kCobyla;
+    polish.initial_step = std::max(10.0 * polish.x_tolerance, 1e-3);
+    polish.max_evaluations = 60;
+    Search refine = search;
+    refine.accuracy = Accuracy::kVerify;
+    refine.has_best = false;
+    refine.best_feasible = false;
+    refine.best_violation = std::numeric_limits<double>::infinity();
+    refine.last_u.clear();
+    const Evaluation searched = run.best;
+    std::vector<double> u(n);
+    for (unsigned i = 0; i < n; ++i)
+      u[i] = std::clamp(to_unit(study.design[i], searched.x[i]), 0.0, 1.0);
+    const std::string result = run_nlopt(refine, polish, u);
+    if (refine.best_feasible) {
+      run.verified = run.best;  // evaluated at the verification accuracy already
+      run.nlopt_result += ", polished: " + result;
+    } else {
+      run.best = searched;
+    }
+    run.feasible = problem.feasible(run.verified, limits);
+  }
+  run.margins = problem.margins(run.verified, limits);
+  return run;
+}
+
+}  // namespace ridefit::optimisation

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ridefit/optimisation/tuning_problem.h"
+
+namespace ridefit::optimisation {
+
+// One point of the search, in evaluation order (for the convergence figure).
+struct SearchStep {
+  int start = 0;  // which start (0 = the study's own)
+  double objective = 0.0;
+  double max_violation = 0.0;  // normalised, 0 when every limit holds
+  bool reused = false;
+};
+
+// The outcome of one optimisation (all starts).
+struct OptimisationRun {
+  FrictionVariant variant = FrictionVariant::kStudy;
+  std::vector<double> limits;  // the constraint limits it ran with
+  Evaluation best;             // best point found (search accuracy): the lowest objective among
+                               // feasible points, or the least violation when none is feasible
+  Evaluation verified;         // `best` re-evaluated at verification accuracy
+  bool feasible = false;       // judged on `verified`
+  std::vector<ConstraintMargin> margins;  // of `verified`
+  std::string nlopt_result;               // NLopt's return of the start that found `best`
+  int evaluations = 0;                    // objective calls, over all starts
+  int computed = 0;                       // of which not found in the journal or the cache
+  std::vector<SearchStep> history;
+};
+
+// Progress lines for stderr ("eval 12 (start 1): objective 0.3181, limits hold").
+using ProgressSink = std::function<void(const std::string&)>;
+
+// Minimises the study's objective under its constraints (`limits` replace the study's) with
+// the study's NLopt algorithm, in coordinates scaled to [0, 1] per variable (log-scaled ones in
+// ln x), from `start` (physical units) and, for more starts, from seeded uniform points.
+// Derivative-free throughout: COBYLA (constraints natively), BOBYQA (inside AUGLAG when
+// constrained), ISRES (constraints natively), DIRECT-L (inside AUGLAG when constrained), MLSL-LDS
+// with BOBYQA as the local method (inside AUGLAG when constrained). The search is deterministic
+// (NLopt's generator and the starts are seeded), which is what lets a resumed run replay its path
+// from the journal. RunError when an evaluation fails (the message names the design and the load
+// case).
+OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
+                         const std::vector<double>& limits, const std::vector<double>& start,
+                         const ProgressSink& progress = {});
+
+// The study's start values.
+std::vector<double> study_start(const TuningStudy& study);
+
+}  // namespace ridefit::optimisation

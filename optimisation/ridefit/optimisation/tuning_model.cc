@@ -1,0 +1,98 @@
+#include "ridefit/optimisation/tuning_model.h"
+
+#include <fmt/core.h>
+
+#include <map>
+#include <stdexcept>
+
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::optimisation {
+namespace {
+
+bool is_stick_slip_strut(const model::AxleTopology& axle) {
+  return axle.suspension == model::AxleSuspension::kStrut &&
+         axle.damper_state == model::DamperState::kStickSlip;
+}
+
+}  // namespace
+
+std::vector<ModelValue> tuned_values(const TuningStudy& study,
+                                     std::span<const double> design_values) {
+  std::vector<ModelValue> values = study.friction_values;
+  for (std::size_t v = 0; v < study.design.size(); ++v) {
+    for (const auto& key : study.design[v].keys) values.emplace_back(key, design_values[v]);
+  }
+  return values;
+}
+
+TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant,
+                               const LoadCase& load_case, std::span<const double> design_values,
+                               const std::string& origin) {
+  std::vector<ModelValue> values = study.friction_values;
+  values.insert(values.end(), load_case.model_values.begin(), load_case.model_values.end());
+  for (std::size_t v = 0; v < study.design.size(); ++v) {
+    for (const auto& key : study.design[v].keys) values.emplace_back(key, design_values[v]);
+  }
+  TuningModel model;
+  if (study.kind == ModelKind::kQuarterCar) {
+    std::map<std::string, double> overrides;
+    std::string damper_state;
+    for (const auto& [key, text] : study.model_settings) {
+      if (key == "damper_state") {
+        damper_state = text;
+        continue;
+      }
+      try {
+        std::size_t used = 0;
+        overrides[key] = std::stod(text, &used);
+        if (used != text.size()) throw std::invalid_argument(text);
+      } catch (const std::logic_error&) {
+        throw InputError(fmt::format("{}: set {}: '{}' is not a number", origin, key, text));
+      }
+    }
+    for (const auto& [key, value] : values) overrides[key] = value;
+    try {
+      auto file = io::load_quarter_car(study.model_file, overrides, damper_state);
+      if (variant == FrictionVariant::kBlind &&
+          file.damper_state == model::DamperState::kStickSlip) {
+        file = io::load_quarter_car(study.model_file, overrides, "slip");
+      }
+      model.quarter = std::move(file);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", origin, e.what()));
+    }
+    return model;
+  }
+  std::vector<io::KeyOverride> overrides = study.model_settings;
+  for (const auto& [key, value] : values)
+    overrides.emplace_back(key, fmt::format("{:.17g}", value));
+  auto file = io::load_half_car(study.model_file, overrides, origin);
+  if (variant == FrictionVariant::kBlind) {
+    bool changed = false;
+    if (is_stick_slip_strut(file.topology.front)) {
+      overrides.emplace_back("front.damper_state", "slip");
+      changed = true;
+    }
+    if (is_stick_slip_strut(file.topology.rear)) {
+      overrides.emplace_back("rear.damper_state", "slip");
+      changed = true;
+    }
+    if (changed) file = io::load_half_car(study.model_file, overrides, origin);
+  }
+  model.half = std::move(file);
+  return model;
+}
+
+bool has_friction(const TuningModel& model) {
+  if (model.quarter) {
+    return model.quarter->damper_state == model::DamperState::kStickSlip &&
+           model.quarter->parameters.coulomb_force_N > 0.0;
+  }
+  const auto& t = model.half->topology;
+  const auto& p = model.half->parameters;
+  return (is_stick_slip_strut(t.front) && p.front.coulomb_force_N > 0.0) ||
+         (is_stick_slip_strut(t.rear) && p.rear.coulomb_force_N > 0.0);
+}
+
+}  // namespace ridefit::optimisation

@@ -1,0 +1,452 @@
+#include "ridefit/optimisation/tuning_study.h"
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <set>
+
+#include "ridefit/io/input_error.h"
+#include "ridefit/io/model_kind.h"
+#include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/value_range.h"
+#include "ridefit/io/yaml_map.h"
+#include "ridefit/optimisation/tuning_model.h"
+#include "ridefit/study/half_car_metrics.h"
+#include "ridefit/study/quarter_car_metrics.h"
+
+namespace ridefit::optimisation {
+namespace {
+
+constexpr long kMaxEvaluations = 1'000'000;
+constexpr long kMaxStarts = 1000;
+constexpr std::size_t kMaxLoadCases = 1000;
+const std::vector<std::string> kFrictionKeys = {"dahl_sigma0_N_per_m", "coulomb_force_N",
+                                                "dahl_exponent"};
+
+Aggregate read_aggregate(const io::YamlMap& map, Aggregate fallback) {
+  if (!map.has("aggregate")) return fallback;
+  return map.choice("aggregate", {"weighted_mean", "worst_case"}) == "worst_case"
+             ? Aggregate::kWorstCase
+             : Aggregate::kWeightedMean;
+}
+
+void check_metric(const io::YamlMap& map, const std::string& metric, ModelKind kind) {
+  const auto& names = metric_names(kind);
+  if (std::find(names.begin(), names.end(), metric) == names.end()) {
+    throw InputError(fmt::format(
+        "{}: unknown metric '{}' for a {}; expected one of: {}", map.locate("metric"), metric,
+        kind == ModelKind::kQuarterCar ? "quarter car" : "half car", fmt::join(names, ", ")));
+  }
+}
+
+// The model file's value of a dotted key, if it has one.
+std::optional<double> model_value(const std::filesystem::path& model, const std::string& key) {
+  YAML::Node node = YAML::LoadFile(model.string());
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t dot = key.find('.', from);
+    const std::string part = key.substr(from, dot == std::string::npos ? dot : dot - from);
+    if (!node.IsMap() || !node[part]) return std::nullopt;
+    node = node[part];
+    if (dot == std::string::npos) break;
+    from = dot + 1;
+  }
+  try {
+    return node.as<double>();
+  } catch (const YAML::Exception&) {
+    return std::nullopt;
+  }
+}
+
+DesignVariable read_design(const io::YamlMap& entry, const TuningStudy& study) {
+  DesignVariable v;
+  v.keys = entry.texts("parameter");
+  v.name = entry.has("name") ? entry.text("name") : v.keys.front();
+  v.lower = entry.number("lower");
+  v.upper = entry.number("upper");
+  if (!(v.lower < v.upper)) {
+    throw InputError(fmt::format("{} is {}, not below upper {}; a variable needs lower < upper",
+                                 entry.locate("lower"), v.lower, v.upper));
+  }
+  v.log_scale = entry.has("scale") && entry.choice("scale", {"linear", "log"}) == "log";
+  if (v.log_scale && !(v.lower > 0.0)) {
+    throw InputError(
+        fmt::format("{}: scale log needs lower > 0 (got {})", entry.locate("scale"), v.lower));
+  }
+  if (entry.has("start")) {
+    v.start = entry.number("start");
+  } else {
+    std::optional<double> value = model_value(study.model_file, v.keys.front());
+    for (const auto& [key, text] : study.model_settings) {
+      if (key == v.keys.front()) value = std::stod(text);  // a number: the model accepted it
+    }
+    if (!value) {
+      throw InputError(fmt::format("{}: '{}' has no number in model {} to start from; give start",
+                                   entry.locate("parameter"), v.keys.front(),
+                                   study.model_file.string()));
+    }
+    v.start = *value;
+  }
+  if (!(v.start >= v.lower && v.start <= v.upper)) {
+    throw InputError(fmt::format(
+        "{} is {}, outside [{}, {}]; the start must lie within the bounds",
+        entry.has("start") ? entry.locate("start") : entry.locate("parameter") + " (model value)",
+        v.start, v.lower, v.upper));
+  }
+  entry.finish();
+  return v;
+}
+
+LoadCase read_load_case(const io::YamlMap& entry, std::size_t index) {
+  LoadCase c;
+  c.name = entry.has("name") ? entry.text("name") : fmt::format("case{}", index + 1);
+  c.road_file = entry.file("road");
+  if (!std::filesystem::is_regular_file(c.road_file)) {
+    throw InputError(fmt::format("{}: no such excitation file {}", entry.locate("road"),
+                                 c.road_file.string()));
+  }
+  if (entry.has("speed_km_per_h") && entry.has("speed_m_per_s")) {
+    throw InputError(fmt::format("{}: give speed_km_per_h or speed_m_per_s, not both",
+                                 entry.locate("speed_km_per_h")));
+  }
+  if (entry.has("speed_km_per_h"))
+    c.speed_m_per_s = entry.positive_up_to("speed_km_per_h", 540) / 3.6;
+  if (entry.has("speed_m_per_s")) c.speed_m_per_s = entry.positive_up_to("speed_m_per_s", 150);
+  if (entry.has("weight")) c.weight = entry.positive_up_to("weight", 1e6);
+  if (entry.has("set")) {
+    const io::YamlMap set = entry.map("set");
+    for (const auto& key : set.keys()) c.model_values.emplace_back(key, set.number(key));
+  }
+  entry.finish();
+  return c;
+}
+
+void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningStudy& study) {
+  std::vector<ModelValue> values;
+  if (friction.has("fitted_model")) {
+    for (const auto& key : kFrictionKeys) {
+      if (friction.has(key)) {
+        throw InputError(fmt::format("{}: give fitted_model or friction values, not both",
+                                     friction.locate(key)));
+      }
+    }
+    study.fitted_model = friction.file("fitted_model");
+    const auto fitted = io::load_quarter_car(study.fitted_model);
+    values = {{"dahl_sigma0_N_per_m", fitted.parameters.dahl_sigma0_N_per_m},
+              {"coulomb_force_N", fitted.parameters.coulomb_force_N},
+              {"dahl_exponent", fitted.parameters.dahl_exponent}};
+  } else {
+    if (friction.has("dahl_sigma0_N_per_m"))
+      values.emplace_back("dahl_sigma0_N_per_m", friction.positive("dahl_sigma0_N_per_m"));
+    if (friction.has("coulomb_force_N"))
+      values.emplace_back("coulomb_force_N", friction.non_negative_up_to("coulomb_force_N", 1e4));
+    if (friction.has("dahl_exponent"))
+      values.emplace_back("dahl_exponent", friction.number_in("dahl_exponent", 0.2, 5.0));
+    if (values.empty()) {
+      throw InputError(fmt::format(
+          "{}: give coulomb_force_N (and optionally dahl_sigma0_N_per_m, dahl_exponent) or "
+          "fitted_model",
+          friction.locate("coulomb_force_N")));
+    }
+  }
+  friction.finish();
+  if (study.kind == ModelKind::kQuarterCar) {
+    const auto& model = *base.quarter;
+    if (model.damper_state != model::DamperState::kStickSlip) {
+      throw InputError(
+          fmt::format("{}: model {} has no friction element (damper_state {}); "
+                      "friction needs damper_state: stick_slip",
+                      friction.locate("coulomb_force_N"), study.model_file.string(),
+                      model::to_string(model.damper_state)));
+    }
+    study.friction_values = values;
+    return;
+  }
+  const auto& model = *base.half;
+  for (const auto& [axle, topology] :
+       {std::pair{"front", model.topology.front}, std::pair{"rear", model.topology.rear}}) {
+    if (topology.suspension == model::AxleSuspension::kStrut &&
+        topology.damper_state == model::DamperState::kStickSlip) {
+      for (const auto& [key, value] : values) {
+        study.friction_values.emplace_back(fmt::format("{}.{}", axle, key), value);
+      }
+    }
+  }
+  if (study.friction_values.empty()) {
+    throw InputError(fmt::format(
+        "{}: model {} has no stick/slip strut; friction needs an axle with suspension: strut "
+        "and damper_state: stick_slip",
+        friction.locate("coulomb_force_N"), study.model_file.string()));
+  }
+}
+
+void read_optimiser(const io::YamlMap& map, OptimiserSettings& o) {
+  if (map.has("algorithm")) {
+    const std::string a =
+        map.choice("algorithm", {"cobyla", "bobyqa", "isres", "direct_l", "mlsl"});
+    o.algorithm = a == "bobyqa"     ? Algorithm::kBobyqa
+                  : a == "isres"    ? Algorithm::kIsres
+                  : a == "direct_l" ? Algorithm::kDirectL
+                  : a == "mlsl"     ? Algorithm::kMlsl
+                                    : Algorithm::kCobyla;
+  }
+  auto integer_in = [&](const char* key, long lo, long hi, long fallback) {
+    if (!map.has(key)) return fallback;
+    const long v = map.integer(key);
+    if (v < lo || v > hi) {
+      throw InputError(fmt::format("{} is {}, expected {} … {}", map.locate(key), v, lo, hi));
+    }
+    return v;
+  };
+  o.starts = static_cast<int>(integer_in("starts", 1, kMaxStarts, o.starts));
+  o.seed = static_cast<unsigned>(integer_in("seed", 0, 4294967295L, o.seed));
+  o.max_evaluations =
+      static_cast<int>(integer_in("max_evaluations", 1, kMaxEvaluations, o.max_evaluations));
+  if (map.has("x_tolerance")) o.x_tolerance = map.positive_up_to("x_tolerance", 0.5);
+  if (map.has("f_tolerance")) o.f_tolerance = map.non_negative_up_to("f_tolerance", 0.5);
+  if (map.has("max_time_s")) o.max_time_s = map.non_negative_up_to("max_time_s", 1e7);
+  if (map.has("initial_step")) o.initial_step = map.positive_up_to("initial_step", 1.0);
+  if (map.has("constraint_tolerance"))
+    o.constraint_tolerance = map.non_negative_up_to("constraint_tolerance", 0.5);
+  map.finish();
+}
+
+void read_evaluation(const io::YamlMap& map, EvaluationSettings& e) {
+  if (map.has("method")) {
+    const std::string m = map.choice("method", {"auto", "frequency", "time"});
+    e.method = m == "frequency" ? EvaluationMethod::kFrequency
+               : m == "time"    ? EvaluationMethod::kTime
+                                : EvaluationMethod::kAuto;
+  }
+  if (map.has("output_rate_Hz")) e.output_rate_Hz = map.positive_up_to("output_rate_Hz", 1e5);
+  if (map.has("settle_s")) e.settle_s = map.non_negative_up_to("settle_s", 1e4);
+  if (map.has("duration_s")) e.duration_s = map.positive_up_to("duration_s", 1e5);
+  if (map.has("relative_tolerance"))
+    e.relative_tolerance = map.number_in("relative_tolerance", 1e-12, 1e-2);
+  if (map.has("verify_relative_tolerance"))
+    e.verify_relative_tolerance = map.number_in("verify_relative_tolerance", 1e-12, 1e-2);
+  if (map.has("frequency_points")) {
+    const long n = map.integer("frequency_points");
+    if (n < 50 || n > 100000) {
+      throw InputError(
+          fmt::format("{} is {}, expected 50 … 100000", map.locate("frequency_points"), n));
+    }
+    e.frequency_points = static_cast<int>(n);
+  }
+  if (map.has("threads")) {
+    const long n = map.integer("threads");
+    if (n < 0 || n > 1024) {
+      throw InputError(
+          fmt::format("{} is {}, expected 0 (every core) … 1024", map.locate("threads"), n));
+    }
+    e.threads = static_cast<unsigned>(n);
+  }
+  map.finish();
+}
+
+}  // namespace
+
+std::string Constraint::describe() const {
+  return fmt::format("{} {} {:g} ({})", metric, is_upper ? "<=" : ">=", limit,
+                     to_string(aggregate));
+}
+
+const std::vector<std::string>& metric_names(ModelKind kind) {
+  static const std::vector<std::string> quarter = [] {
+    std::vector<std::string> names;
+    for (const auto& [name, value] : study::QuarterCarMetrics{}.named()) names.push_back(name);
+    return names;
+  }();
+  static const std::vector<std::string> half = [] {
+    std::vector<std::string> names;
+    for (const auto& [name, value] : study::HalfCarMetrics{}.named()) names.push_back(name);
+    names.push_back("front_travel_peak_m");
+    names.push_back("rear_travel_peak_m");
+    return names;
+  }();
+  return kind == ModelKind::kQuarterCar ? quarter : half;
+}
+
+const char* to_string(Algorithm algorithm) {
+  switch (algorithm) {
+    case Algorithm::kCobyla:
+      return "cobyla";
+    case Algorithm::kBobyqa:
+      return "bobyqa";
+    case Algorithm::kIsres:
+      return "isres";
+    case Algorithm::kDirectL:
+      return "direct_l";
+    case Algorithm::kMlsl:
+      return "mlsl";
+  }
+  return "?";
+}
+
+const char* to_string(Aggregate aggregate) {
+  return aggregate == Aggregate::kWorstCase ? "worst_case" : "weighted_mean";
+}
+
+TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
+  const io::YamlMap file = io::YamlMap::load(study_file);
+  TuningStudy study;
+  study.study_file = study_file;
+  study.model_file = file.file("model");
+  const std::string kind = io::model_kind(study.model_file);
+  study.kind = kind == "half_car" ? ModelKind::kHalfCar : ModelKind::kQuarterCar;
+
+  if (file.has("set")) {
+    const YAML::Node set = YAML::LoadFile(study_file.string())["set"];
+    if (!set.IsMap()) {
+      throw InputError(
+          fmt::format("{} must be a mapping of model keys, e.g. {{front.suspension: strut}}",
+                      file.locate("set")));
+    }
+    const io::YamlMap settings = file.map("set");
+    for (const auto& key : settings.keys()) {
+      study.model_settings.emplace_back(key, settings.text(key));
+    }
+  }
+  // The model as the study uses it, before the design or the cases change it.
+  const TuningModel base = build_tuning_model(study, FrictionVariant::kStudy, LoadCase{}, {},
+                                              fmt::format("{}: set", study_file.string()));
+  if (file.has("friction")) read_friction(file.map("friction"), base, study);
+
+  std::set<std::string> names, keys;
+  for (const auto& entry : file.maps("design")) {
+    study.design.push_back(read_design(entry, study));
+    if (!names.insert(study.design.back().name).second) {
+      throw InputError(fmt::format("{}: the name '{}' is used twice", entry.locate("parameter"),
+                                   study.design.back().name));
+    }
+    for (const auto& key : study.design.back().keys) {
+      if (!keys.insert(key).second) {
+        throw InputError(
+            fmt::format("{}: '{}' is set by two design variables", entry.locate("parameter"), key));
+      }
+    }
+  }
+
+  if (!file.has("load_cases")) {
+    throw InputError(fmt::format("{} is missing; give at least one case with a road",
+                                 file.locate("load_cases")));
+  }
+  const YAML::Node cases = YAML::LoadFile(study_file.string())["load_cases"];
+  if (!cases.IsSequence() || cases.size() == 0) {
+    throw InputError(
+        fmt::format("{} is empty; give at least one case, e.g. - {{road: ../excitations/x.yaml}}",
+                    file.locate("load_cases")));
+  }
+  const auto case_maps = file.maps("load_cases");
+  if (case_maps.size() > kMaxLoadCases) {
+    throw InputError(
+        fmt::format("{}: more than {} cases", file.locate("load_cases"), kMaxLoadCases));
+  }
+  std::set<std::string> case_names;
+  for (std::size_t i = 0; i < case_maps.size(); ++i) {
+    study.load_cases.push_back(read_load_case(case_maps[i], i));
+    if (!case_names.insert(study.load_cases.back().name).second) {
+      throw InputError(fmt::format("{}: the case name '{}' is used twice",
+                                   case_maps[i].locate("name"), study.load_cases.back().name));
+    }
+  }
+
+  const io::YamlMap objective = file.map("objective");
+  study.objective.metric = objective.text("metric");
+  check_metric(objective, study.objective.metric, study.kind);
+  study.objective.aggregate = read_aggregate(objective, Aggregate::kWeightedMean);
+  objective.finish();
+
+  if (file.has("constraints")) {
+    for (const auto& entry : file.maps("constraints")) {
+      Constraint c;
+      c.metric = entry.text("metric");
+      check_metric(entry, c.metric, study.kind);
+      if (entry.has("max") == entry.has("min")) {
+        throw InputError(fmt::format("{}: give exactly one of max and min", entry.locate("max")));
+      }
+      c.is_upper = entry.has("max");
+      c.limit = entry.number(c.is_upper ? "max" : "min");
+      if (!(c.limit > 0.0)) {
+        throw InputError(fmt::format("{} is {}; a limit on a ride metric must be above 0",
+                                     entry.locate(c.is_upper ? "max" : "min"), c.limit));
+      }
+      c.aggregate = read_aggregate(entry, Aggregate::kWorstCase);
+      entry.finish();
+      study.constraints.push_back(c);
+    }
+  }
+
+  if (file.has("optimiser")) read_optimiser(file.map("optimiser"), study.optimiser);
+  if (file.has("evaluation")) read_evaluation(file.map("evaluation"), study.evaluation);
+
+  if (file.has("tradeoff")) {
+    const io::YamlMap t = file.map("tradeoff");
+    const std::string metric = t.text("metric");
+    Tradeoff tradeoff;
+    bool found = false;
+    for (std::size_t i = 0; i < study.constraints.size() && !found; ++i) {
+      if (study.constraints[i].metric == metric) {
+        tradeoff.constraint = i;
+        found = true;
+      }
+    }
+    if (!found) {
+      throw InputError(fmt::format(
+          "{}: '{}' is not constrained; the trade-off sweeps the limit of a constraint (add it "
+          "under constraints)",
+          t.locate("metric"), metric));
+    }
+    if (t.has("limits") == t.has("range")) {
+      throw InputError(
+          fmt::format("{}: give limits: [..] or range: {{from, to, count}}", t.locate("limits")));
+    }
+    tradeoff.limits = t.has("limits") ? t.numbers("limits") : io::read_value_range(t.map("range"));
+    for (double limit : tradeoff.limits) {
+      if (!(limit > 0.0)) {
+        throw InputError(fmt::format("{}: limit {} is not above 0", t.locate("limits"), limit));
+      }
+    }
+    t.finish();
+    study.tradeoff = tradeoff;
+  }
+
+  // Every case and both ends of every variable on the model, so that a value the model rejects
+  // is reported now, not in the middle of the search.
+  std::vector<double> start;
+  for (const auto& v : study.design) start.push_back(v.start);
+  for (std::size_t c = 0; c < study.load_cases.size(); ++c) {
+    const auto origin =
+        fmt::format("{}: load case '{}'", study_file.string(), study.load_cases[c].name);
+    const TuningModel model =
+        build_tuning_model(study, FrictionVariant::kStudy, study.load_cases[c], start, origin);
+    if (c == 0) study.model_has_friction = has_friction(model);
+  }
+  for (std::size_t v = 0; v < study.design.size(); ++v) {
+    for (double value : {study.design[v].lower, study.design[v].upper}) {
+      std::vector<double> x = start;
+      x[v] = value;
+      build_tuning_model(study, FrictionVariant::kStudy, study.load_cases.front(), x,
+                         fmt::format("{}: design variable '{}' = {:g}", study_file.string(),
+                                     study.design[v].name, value));
+    }
+  }
+  if (file.has("friction_cost")) {
+    const std::string s = file.choice("friction_cost", {"true", "false"});
+    study.friction_cost = s == "true";
+    if (study.friction_cost && !study.model_has_friction) {
+      throw InputError(fmt::format(
+          "{}: the model has no friction (no stick/slip damper with coulomb_force_N > 0), so "
+          "there is nothing to ignore",
+          file.locate("friction_cost")));
+    }
+  } else {
+    study.friction_cost = study.model_has_friction;
+  }
+  file.finish();
+  return study;
+}
+
+}  // namespace ridefit::optimisation

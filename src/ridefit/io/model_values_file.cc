@@ -1,0 +1,36 @@
+#include "ridefit/io/model_values_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include "ridefit/io/atomic_file.h"
+
+namespace ridefit::io {
+
+void write_model_with_values(const std::filesystem::path& model_file,
+                             const std::vector<std::pair<std::string, double>>& values,
+                             const std::filesystem::path& output_file, const std::string& comment) {
+  YAML::Node root = YAML::LoadFile(model_file.string());
+  for (const auto& [key, value] : values) {
+    std::vector<std::string> parts;
+    std::size_t from = 0;
+    for (std::size_t dot = key.find('.'); dot != std::string::npos; dot = key.find('.', from)) {
+      parts.push_back(key.substr(from, dot - from));
+      from = dot + 1;
+    }
+    const std::string last = key.substr(from);
+    // yaml-cpp nodes are handles: walking by assignment would rebind, so recurse instead.
+    auto set = [&](auto&& self, YAML::Node node, std::size_t depth) -> void {
+      if (depth == parts.size()) {
+        node[last] = value;
+        return;
+      }
+      self(self, node[parts[depth]], depth + 1);
+    };
+    set(set, root, 0);
+  }
+  write_atomically(output_file, [&](std::ostream& out) {
+    out << "# " << comment << "\n" << root << "\n";
+  });
+}
+
+}  // namespace ridefit::io
