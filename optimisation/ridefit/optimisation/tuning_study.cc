@@ -104,8 +104,8 @@ LoadCase read_load_case(const io::YamlMap& entry, std::size_t index) {
   c.name = entry.has("name") ? entry.text("name") : fmt::format("case{}", index + 1);
   c.road_file = entry.file("road");
   if (!std::filesystem::is_regular_file(c.road_file)) {
-    throw InputError(fmt::format("{}: no such excitation file {}", entry.locate("road"),
-                                 c.road_file.string()));
+    throw InputError(
+        fmt::format("{}: no such excitation file {}", entry.locate("road"), c.road_file.string()));
   }
   if (entry.has("speed_km_per_h") && entry.has("speed_m_per_s")) {
     throw InputError(fmt::format("{}: give speed_km_per_h or speed_m_per_s, not both",

@@ -1,7 +1,7 @@
 #include "ridefit/simulate/quarter_car_state_space.h"
 
-#include <stdexcept>
 #include <array>
+#include <stdexcept>
 
 namespace ridefit::simulate {
 
