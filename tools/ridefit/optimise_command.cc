@@ -207,6 +207,7 @@ io::Figure figure_of(const opt::TuningProblem& problem, const Outcome& o) {
   for (auto* s : {&feasible, &infeasible}) {
     if (!s->x.empty()) history.series.push_back(*s);
   }
+  history.x_range = std::pair{0.0, static_cast<double>(o.aware.history.size() + 1)};
   figure.panels.push_back(history);
   if (!o.tradeoff.empty() || o.friction) {
     const std::string metric = study.tradeoff
