@@ -123,6 +123,25 @@ TEST_F(HalfCarSweepTest, DiscomfortRisesWithSpeedAndRoughness) {
   }
 }
 
+// The compression/rebound split is an optional key the file leaves out: a study may vary it,
+// and since it makes the car nonlinear the whole study runs in the time domain (every run's
+// car decides, not only the first one's).
+TEST_F(HalfCarSweepTest, VaryingTheDamperSplitRunsInTheTimeDomain) {
+  const std::string vary =
+      "vary:\n  - parameter: [front.compression_to_rebound_ratio, "
+      "rear.compression_to_rebound_ratio]\n    values: [1, 0.5]\n";
+  const std::string frequency = testing::input_error_message(
+      [&] { run_half_car_sweep(load_half_car_sweep(study("method: frequency\n" + vary))); });
+  EXPECT_NE(frequency.find("method frequency needs a linear car"), std::string::npos) << frequency;
+  const auto sweep = load_half_car_sweep(
+      study("time: {output_rate_Hz: 500, settle_s: 1, duration_s: 4}\n" + vary));
+  const auto rows = run_half_car_sweep(sweep, 2);
+  ASSERT_EQ(rows.size(), 4u);  // two roads, two ratios
+  for (const auto& row : rows) EXPECT_FALSE(row.frequency_domain);
+  EXPECT_EQ(rows[1].point.values[0], 0.5);
+  EXPECT_NE(rows[1].metrics.front_travel_rms_m, rows[0].metrics.front_travel_rms_m);
+}
+
 TEST(ParallelFor, RunsEveryIndexOnceAndRethrowsTheFirstFailure) {
   for (unsigned threads : {1u, 2u}) {
     std::vector<int> hits(100, 0);

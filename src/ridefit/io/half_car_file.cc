@@ -18,6 +18,18 @@ constexpr double kMaxInertia_kg_m2 = 1e6;
 constexpr double kMaxStiffness_N_per_m = 1e10;
 constexpr double kMaxDamping_Ns_per_m = 1e7;
 constexpr double kMaxDistance_m = 20.0;
+// A damper's compression coefficient over its rebound coefficient: > 0 (the strut's damper
+// rate divides by it), at most 10 (beyond any real valving; catches a typed percentage).
+constexpr double kMaxCompressionToReboundRatio = 10.0;
+constexpr double kSymmetricDamper = 1.0;
+
+// Keys each axle may leave out, because alone they have a default (a file without them means
+// what it meant before they existed). A dotted override may add these to the file; every other
+// key must be in the file, so a typo never adds a key that nothing reads. The Dahl keys and the
+// control section are optional too, but only as a group (a lone coulomb_force_N has no
+// sensible partners), so they are not here.
+constexpr const char* kAxles[] = {"front", "rear"};
+constexpr const char* kOptionalAxleKeys[] = {"compression_to_rebound_ratio"};
 
 std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlMap& axle) {
   model::AxleTopology topology;
@@ -38,6 +50,12 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
   // A strut's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0 there.
   p.damping_Ns_per_m = strut ? axle.positive_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m)
                              : axle.non_negative_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it.
+  p.compression_to_rebound_ratio = kSymmetricDamper;
+  if (axle.has("compression_to_rebound_ratio")) {
+    p.compression_to_rebound_ratio =
+        axle.positive_up_to("compression_to_rebound_ratio", kMaxCompressionToReboundRatio);
+  }
   p.top_mount_stiffness_N_per_m = 1.0;
   if (strut || axle.has("top_mount_stiffness_N_per_m")) {
     p.top_mount_stiffness_N_per_m =
@@ -150,12 +168,22 @@ YAML::Node find_scalar(const YAML::Node& node, const std::vector<std::string>& p
   return find_scalar(node[parts[i]], parts, i + 1);
 }
 
+// True for a key of kOptionalAxleKeys under front or rear.
+bool optional_key(const std::vector<std::string>& parts) {
+  if (parts.size() != 2) return false;
+  bool axle = false, key = false;
+  for (const char* a : kAxles) axle = axle || parts[0] == a;
+  for (const char* k : kOptionalAxleKeys) key = key || parts[1] == k;
+  return axle && key;
+}
+
 }  // namespace
 
 bool half_car_has_key(const std::filesystem::path& path, const std::string& dotted_key) {
   YamlMap::load(path);  // the file's own errors first
   const YAML::Node root = YAML::LoadFile(path.string());
-  return find_scalar(root, split_dotted(dotted_key)).IsDefined();
+  const std::vector<std::string> parts = split_dotted(dotted_key);
+  return find_scalar(root, parts).IsDefined() || optional_key(parts);
 }
 
 HalfCarFile load_half_car(const std::filesystem::path& path,
@@ -167,14 +195,20 @@ HalfCarFile load_half_car(const std::filesystem::path& path,
     if (key == "model") {
       throw InputError(fmt::format("{} model: the model type cannot be replaced", origin));
     }
-    YAML::Node target = find_scalar(root, split_dotted(key));
-    if (!target.IsDefined()) {
+    const std::vector<std::string> parts = split_dotted(key);
+    YAML::Node target = find_scalar(root, parts);
+    if (target.IsDefined()) {
+      target = value;
+    } else if (optional_key(parts) && root[parts[0]].IsMap()) {
+      YAML::Node axle = root[parts[0]];
+      axle[parts[1]] = value;  // an optional key the file leaves at its default
+    } else {
       throw InputError(
           fmt::format("{} {}: not a key of {} (use a dotted path to a key the file has, e.g. "
-                      "front.damping_Ns_per_m)",
+                      "front.damping_Ns_per_m, or an optional one such as "
+                      "front.compression_to_rebound_ratio)",
                       origin, key, path.string()));
     }
-    target = value;
   }
   try {
     return read_half_car(YamlMap(root, path, ""));

@@ -9,7 +9,8 @@
 
 namespace ridefit::io {
 
-// A half-car model file (YAML; datasets/vehicles/ajayi_half_car.yaml has every key):
+// A half-car model file (YAML; datasets/vehicles/ajayi_half_car.yaml has every key but the
+// optional compression_to_rebound_ratio):
 //
 //   model: half_car
 //   body_mass_kg: 575
@@ -24,7 +25,9 @@ namespace ridefit::io {
 //     tyre_stiffness_N_per_m: 190000
 //     tyre_damping_Ns_per_m: 350
 //     spring_stiffness_N_per_m: 16812
-//     damping_Ns_per_m: 1000
+//     damping_Ns_per_m: 1000          # rebound (extension) coefficient c_r
+//     compression_to_rebound_ratio: 1 # optional, default 1 (symmetric), in (0, 10]: the
+//                                     # compression coefficient is this times c_r
 //     top_mount_stiffness_N_per_m: 488000   # required for a strut, checked if present
 //     dahl_sigma0_N_per_m: 5.0e6            # required for stick_slip, checked if present
 //     coulomb_force_N: 60
@@ -53,14 +56,17 @@ struct HalfCarFile {
 // A replacement for one key of the file, by dotted path: {"front.damping_Ns_per_m", "1500"},
 // {"front.suspension", "strut"}. The key must exist in the file (an unknown one is an
 // InputError naming it and `origin`, e.g. "--set" or the study file), so a typo never adds a
-// key that nothing reads.
+// key that nothing reads. The exceptions are the optional keys that stand alone with a default,
+// front.compression_to_rebound_ratio and rear.compression_to_rebound_ratio: an override sets
+// them whether or not the file has them.
 using KeyOverride = std::pair<std::string, std::string>;
 
 HalfCarFile load_half_car(const std::filesystem::path& path,
                           const std::vector<KeyOverride>& overrides = {},
                           const std::string& origin = "--set");
 
-// True when `dotted_key` names a scalar of the file (for checking a study before it runs).
+// True when `dotted_key` names a scalar of the file, or one of the optional keys an override
+// may add (for checking a study before it runs).
 bool half_car_has_key(const std::filesystem::path& path, const std::string& dotted_key);
 
 }  // namespace ridefit::io

@@ -23,6 +23,9 @@ constexpr double kMaxMass_kg = 1e5;
 constexpr double kMaxStiffness_N_per_m = 1e10;
 constexpr double kMaxDamping_Ns_per_m = 1e7;
 constexpr double kMaxCoulombForce_N = 1e5;
+// A damper's compression coefficient over its rebound coefficient: > 0 (the damper rate divides
+// by it), at most 10 (beyond any real valving; catches a typed percentage).
+constexpr double kMaxCompressionToReboundRatio = 10.0;
 
 QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_state) {
   file.choice("model", {"quarter_car"});
@@ -45,6 +48,13 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
       file.positive_up_to("top_mount_stiffness_N_per_m", kMaxStiffness_N_per_m);
   // The Maxwell element's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0.
   p.damping_Ns_per_m = file.positive_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it (and by
+  // default the same: the symmetric damper).
+  p.compression_to_rebound_ratio = 1.0;
+  if (file.has("compression_to_rebound_ratio")) {
+    p.compression_to_rebound_ratio =
+        file.positive_up_to("compression_to_rebound_ratio", kMaxCompressionToReboundRatio);
+  }
   const bool friction_required = result.damper_state == model::DamperState::kStickSlip;
   if (friction_required || file.has("dahl_sigma0_N_per_m") || file.has("coulomb_force_N") ||
       file.has("dahl_exponent")) {

@@ -19,7 +19,9 @@ namespace ridefit::io {
 //   spring_stiffness_N_per_m: 29000
 //   top_mount_spring_path_stiffness_N_per_m: 800000
 //   top_mount_stiffness_N_per_m: 488000
-//   damping_Ns_per_m: 887
+//   damping_Ns_per_m: 887             # rebound (extension) coefficient c_r
+//   compression_to_rebound_ratio: 1   # optional, default 1 (symmetric), in (0, 10]: the
+//                                     # compression coefficient is this times c_r
 //   dahl_sigma0_N_per_m: 5.0e6        # required for stick_slip, optional otherwise
 //   coulomb_force_N: 60
 //   dahl_exponent: 1

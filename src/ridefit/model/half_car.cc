@@ -25,11 +25,14 @@ HalfCar::HalfCar(const HalfCarTopology& topology, const HalfCarParameters<double
     : topology_(topology), parameters_(parameters) {}
 
 bool HalfCar::is_linear() const {
-  auto linear = [](const AxleTopology& axle) {
-    return axle.suspension == AxleSuspension::kPassive ||
-           axle.damper_state != DamperState::kStickSlip;
+  auto linear = [](const AxleTopology& axle, const HalfCarAxle<double>& p) {
+    if (axle.suspension == AxleSuspension::kStrut) {
+      if (axle.damper_state == DamperState::kStickSlip) return false;
+      if (axle.damper_state == DamperState::kStick) return true;  // the damper never moves
+    }
+    return p.damper_path().damper.symmetric();
   };
-  return linear(topology_.front) && linear(topology_.rear) &&
+  return linear(topology_.front, parameters_.front) && linear(topology_.rear, parameters_.rear) &&
          topology_.control.law == ControlLaw::kPassive;
 }
 
@@ -103,6 +106,11 @@ MassDampingStiffness assemble_mass_damping_stiffness(const HalfCarTopology& topo
     throw std::invalid_argument(
         "assemble_mass_damping_stiffness: a strut's damper path adds states; use the state-space "
         "form");
+  }
+  if (!p.front.damper_path().damper.symmetric() || !p.rear.damper_path().damper.symmetric()) {
+    throw std::invalid_argument(
+        "assemble_mass_damping_stiffness: an asymmetric damper (compression_to_rebound_ratio != 1) "
+        "has no single damping matrix");
   }
   using Vector = Eigen::Matrix<double, kHalfCarDofs, 1>;
   MassDampingStiffness m;

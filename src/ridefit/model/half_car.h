@@ -29,28 +29,39 @@ enum HalfCarDof : int {
 };
 
 // One axle: wheel, tyre and suspension. The strut keys are read only when the axle is a strut.
+// The damper (passive or in the strut) is an AsymmetricDamper: damping_Ns_per_m in rebound
+// (extension) and compression_to_rebound_ratio times it in compression.
 template <typename T>
 struct HalfCarAxle {
   T unsprung_mass_kg;
   T tyre_stiffness_N_per_m;
   T tyre_damping_Ns_per_m;
   T spring_stiffness_N_per_m;
-  T damping_Ns_per_m;
+  T damping_Ns_per_m;  // rebound (extension) coefficient c_r
   T top_mount_stiffness_N_per_m;
   T dahl_sigma0_N_per_m;
   T coulomb_force_N;
   T dahl_exponent;
+  // c_c = r·c_r. Last, with its default, so an initialiser without it keeps the symmetric damper.
+  T compression_to_rebound_ratio{1.0};
 
+  // The damper with coefficient `rebound_damping` in rebound (the axle's own, or a
+  // controller's) and this axle's compression ratio.
+  AsymmetricDamper<T> damper(const T& rebound_damping) const {
+    return {rebound_damping, compression_to_rebound_ratio};
+  }
   StrutDamperPath<T> damper_path() const {
     return {{top_mount_stiffness_N_per_m},
-            {damping_Ns_per_m},
+            damper(damping_Ns_per_m),
             {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
   }
   template <typename U>
   HalfCarAxle<U> cast() const {
-    return {U(unsprung_mass_kg),         U(tyre_stiffness_N_per_m), U(tyre_damping_Ns_per_m),
-            U(spring_stiffness_N_per_m), U(damping_Ns_per_m),       U(top_mount_stiffness_N_per_m),
-            U(dahl_sigma0_N_per_m),      U(coulomb_force_N),        U(dahl_exponent)};
+    return {U(unsprung_mass_kg),      U(tyre_stiffness_N_per_m),
+            U(tyre_damping_Ns_per_m), U(spring_stiffness_N_per_m),
+            U(damping_Ns_per_m),      U(top_mount_stiffness_N_per_m),
+            U(dahl_sigma0_N_per_m),   U(coulomb_force_N),
+            U(dahl_exponent),         U(compression_to_rebound_ratio)};
   }
 };
 
@@ -139,7 +150,9 @@ struct HalfCarOutputs {
   double front_tyre_force_N = 0, rear_tyre_force_N = 0;      // dynamic, compression positive
   double front_damper_force_N = 0, rear_damper_force_N = 0;  // hydraulic, tension positive
   double front_friction_force_N = 0, rear_friction_force_N = 0;
-  double front_damping_Ns_per_m = 0, rear_damping_Ns_per_m = 0;  // the controller's choice
+  // The damper's coefficient now: the controller's choice (the axle's own when passive) in
+  // rebound, times compression_to_rebound_ratio in compression.
+  double front_damping_Ns_per_m = 0, rear_damping_Ns_per_m = 0;
   double front_stuck = 0, rear_stuck = 0;  // QuarterCar's rule: |F_f| < 0.95·Fc
 };
 
@@ -149,12 +162,13 @@ struct HalfCarOutputs {
 // pushes the two apart by −F·(g_a − g_b) on the generalised forces. The mass matrix is
 // diag(m_b, J, m_uf, m_ur, m_se, m_2, m_3).
 //
-// Elements: per axle the coil spring and the damper (passive: c·ė, with the controller's c;
-// strut: the damper path of StrutDamperPath, whose internal states are the damper deflection
-// z_c and the Dahl force F_f) between the body point over the axle and the wheel, and the tyre
-// (Kelvin-Voigt, compression positive, point contact, never lifts off) between wheel and road;
-// the seat between the body point at a3 and the seat mass; the lower body on the seat; the
-// upper body on the seat (seed 001) or on the lower body.
+// Elements: per axle the coil spring and the damper (passive: c(ė)·ė, with the controller's c in
+// rebound, ė > 0, and compression_to_rebound_ratio times it in compression, ė < 0; strut: the
+// damper path of StrutDamperPath with the same split, whose internal states are the damper
+// deflection z_c and the Dahl force F_f) between the body point over the axle and the wheel,
+// and the tyre (Kelvin-Voigt, compression positive, point contact, never lifts off) between
+// wheel and road; the seat between the body point at a3 and the seat mass; the lower body on
+// the seat; the upper body on the seat (seed 001) or on the lower body.
 //
 // State: [q (7), q' (7), front strut states (z_c, F_f as the damper state has them), rear strut
 // states]. Sizes: 14 for passive axles, up to 18 with two stick/slip struts.
@@ -168,7 +182,9 @@ class HalfCar {
     return 2 * kHalfCarDofs + topology_.front.internal_state_count() +
            topology_.rear.internal_state_count();
   }
-  // True when the model is linear: no Dahl friction (no stick/slip strut) and passive damping.
+  // True when the model is linear: no Dahl friction (no stick/slip strut), passive damping and
+  // symmetric dampers (compression_to_rebound_ratio 1 on both axles; a stick strut's locked
+  // damper never moves, so its split does not act).
   bool is_linear() const;
   std::vector<std::string> state_names() const;
 
@@ -189,8 +205,8 @@ class HalfCar {
     T suspension_N;  // spring + damper path, tension positive
     T damper_N;
     T friction_N;
-    T damping_Ns_per_m;
-    T tyre_N;  // compression positive
+    T damping_Ns_per_m;  // the damper's coefficient now (HalfCarOutputs)
+    T tyre_N;            // compression positive
   };
 
   template <typename T>
@@ -205,7 +221,8 @@ class HalfCar {
 
 // M, C and K of the linear model with both axles passive, assembled from the same elements
 // (for the tests of symmetry and definiteness, and for modal analysis). With struts the damper
-// path adds states, so this is an std::invalid_argument.
+// path adds states, and an asymmetric damper has no single C, so these are an
+// std::invalid_argument.
 struct MassDampingStiffness {
   Eigen::Matrix<double, kHalfCarDofs, kHalfCarDofs> mass, damping, stiffness;
 };
@@ -222,26 +239,34 @@ HalfCar::AxleForces<T> HalfCar::axle_forces(const AxleTopology& topology,
                                             const road::RoadSample& road, const T* internal,
                                             T* internal_rate) const {
   AxleForces<T> f;
-  f.damping_Ns_per_m =
-      topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m);
+  // The controller sets the rebound coefficient; the damper's compression valve gives
+  // compression_to_rebound_ratio times it (SemiActiveControl).
+  const AsymmetricDamper<T> damper =
+      axle.damper(topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m));
   f.friction_N = T(0.0);
   T path(0.0);
   if (topology.suspension == AxleSuspension::kPassive) {
-    path = f.damping_Ns_per_m * travel_rate;
+    // The damper's own rate is the travel rate: its sign picks the branch.
+    f.damping_Ns_per_m = damper.damping_Ns_per_m(travel_rate);
+    path = damper.force_N(travel_rate);
     f.damper_N = path;
   } else {
     StrutDamperPath<T> strut = axle.damper_path();
-    strut.damper.damping_Ns_per_m = f.damping_Ns_per_m;
+    strut.damper = damper;
+    f.damping_Ns_per_m = damper.rebound_damping_Ns_per_m;
     switch (topology.damper_state) {
       case DamperState::kStick:
         path = strut.path_force_N(travel, T(0.0));
         f.damper_N = path;  // the locked damper carries the whole path force
         break;
-      case DamperState::kSlip:
+      case DamperState::kSlip: {
         path = strut.path_force_N(travel, internal[0]);
-        internal_rate[0] = strut.damper_rate_m_per_s(path, T(0.0));
+        const T damper_rate = strut.damper_rate_m_per_s(path, T(0.0));
+        internal_rate[0] = damper_rate;
         f.damper_N = path;
+        f.damping_Ns_per_m = damper.damping_Ns_per_m(damper_rate);
         break;
+      }
       case DamperState::kStickSlip: {
         path = strut.path_force_N(travel, internal[0]);
         const T damper_rate = strut.damper_rate_m_per_s(path, internal[1]);
@@ -249,6 +274,7 @@ HalfCar::AxleForces<T> HalfCar::axle_forces(const AxleTopology& topology,
         internal_rate[1] = strut.friction.force_rate_N_per_s(internal[1], damper_rate);
         f.damper_N = path - internal[1];
         f.friction_N = internal[1];
+        f.damping_Ns_per_m = damper.damping_Ns_per_m(damper_rate);
         break;
       }
     }

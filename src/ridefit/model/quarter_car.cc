@@ -7,6 +7,18 @@ namespace ridefit::model {
 QuarterCar::QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters)
     : state_(state), parameters_(parameters) {}
 
+bool QuarterCar::is_linear() const {
+  switch (state_) {
+    case DamperState::kStick:
+      return true;
+    case DamperState::kSlip:
+      return parameters_.damper_path().damper.symmetric();
+    case DamperState::kStickSlip:
+      return false;
+  }
+  return false;
+}
+
 std::array<const char*, QuarterCar::kMaxStates> QuarterCar::state_names() const {
   return {"body_displacement", "wheel_displacement", "body_velocity",
           "wheel_velocity",    "damper_deflection",  "friction_force"};
@@ -25,7 +37,8 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
                      p.tyre_damping_Ns_per_m * (road.rate_m_per_s - x[3]);
   const double damper_deflection = state_ == DamperState::kStick ? 0.0 : x[4];
   out.top_mount_deflection_m = out.travel_m - damper_deflection;
-  out.damper_force_N = state_ == DamperState::kStick ? 0.0 : p.damping_Ns_per_m * xdot[4];
+  out.damper_force_N =
+      state_ == DamperState::kStick ? 0.0 : p.damper_path().damper.force_N(xdot[4]);
   switch (state_) {
     case DamperState::kSlip:
       out.stuck = 0.0;

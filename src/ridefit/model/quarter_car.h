@@ -21,10 +21,13 @@ struct QuarterCarParameters {
   T spring_stiffness_N_per_m;                 // coil spring
   T top_mount_spring_path_stiffness_N_per_m;  // top mount, in series with the coil
   T top_mount_stiffness_N_per_m;              // top mount, damper path
-  T damping_Ns_per_m;
+  T damping_Ns_per_m;                         // rebound (extension) coefficient c_r
   T dahl_sigma0_N_per_m;
   T coulomb_force_N;
   T dahl_exponent;
+  // Compression coefficient over rebound coefficient, c_c = r·c_r (AsymmetricDamper). Last,
+  // with its default, so a file or initialiser without it keeps the symmetric damper.
+  T compression_to_rebound_ratio{1.0};
 
   template <typename U>
   QuarterCarParameters<U> cast() const {
@@ -38,7 +41,8 @@ struct QuarterCarParameters {
             U(damping_Ns_per_m),
             U(dahl_sigma0_N_per_m),
             U(coulomb_force_N),
-            U(dahl_exponent)};
+            U(dahl_exponent),
+            U(compression_to_rebound_ratio)};
   }
 
   // Coil spring in series with the top mount's spring path.
@@ -47,7 +51,7 @@ struct QuarterCarParameters {
   }
   StrutDamperPath<T> damper_path() const {
     return {{top_mount_stiffness_N_per_m},
-            {damping_Ns_per_m},
+            {damping_Ns_per_m, compression_to_rebound_ratio},
             {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
   }
 };
@@ -59,7 +63,7 @@ struct QuarterCarOutputs {
   double wheel_acc_m_per_s2 = 0;
   double travel_m = 0;                // zs − zu, extension positive
   double tyre_force_N = 0;            // dynamic tyre load, compression positive
-  double damper_force_N = 0;          // hydraulic damper force c·z_c'
+  double damper_force_N = 0;          // hydraulic damper force c(z_c')·z_c' (AsymmetricDamper)
   double friction_force_N = 0;        // Dahl friction F_f
   double top_mount_deflection_m = 0;  // damper path top mount, z − z_c
   double stuck = 0;                   // 1 while the damper sticks (rule in QuarterCar)
@@ -79,7 +83,9 @@ struct QuarterCarOutputs {
 //   ms·zs'' = −k_sp·z − F_path
 //   mu·zu'' =  k_sp·z + F_path − kt·(zu − h) − ct·(zu' − h')
 // with the spring path k_sp = coil in series with the top mount's spring path and F_path
-// from StrutDamperPath.
+// from StrutDamperPath. The damper's coefficient is damping_Ns_per_m in rebound (z_c' > 0) and
+// compression_to_rebound_ratio times it in compression; with a ratio other than 1 the slip
+// model is no longer linear (is_linear()).
 //
 // Stuck rule (the `stuck` output): in stick/slip the damper counts as stuck while the
 // Dahl element is on its pre-sliding branch, |F_f| < 0.95·Fc (gross sliding drives |F_f|
@@ -95,6 +101,10 @@ class QuarterCar {
   DamperState damper_state() const { return state_; }
   const QuarterCarParameters<double>& parameters() const { return parameters_; }
   int state_size() const { return 4 + StrutDamperPath<double>::state_count(state_); }
+  // True for the linear models: stick (the locked damper never moves, so its split does not
+  // act), and slip with a symmetric damper (compression_to_rebound_ratio 1). Stick/slip has
+  // Dahl friction and is never linear.
+  bool is_linear() const;
   // Names of the states in order, for messages and output.
   std::array<const char*, kMaxStates> state_names() const;
 

@@ -23,6 +23,12 @@ namespace ridefit::model {
 // a strut the damper's own rate differs from it by the top mount's deflection rate, and using
 // that instead would make c depend on itself. Friction (Dahl) stays in parallel with the
 // controlled damper: the controller cannot remove it (seed 000, Section 1).
+//
+// An asymmetric damper (the axle's compression_to_rebound_ratio r ≠ 1, AsymmetricDamper): the
+// law's c is the rebound setting, and in compression the damper gives r·c. The split is a
+// property of the damper's valves, which the controller's command scales as a whole, so in
+// compression the clipping range is r·[c_min, c_max] and the skyhook or groundhook force is r
+// times the requested one. With r = 1 the law is as above.
 enum class ControlLaw { kPassive, kSkyhook, kGroundhook, kHybrid };
 
 struct SemiActiveControl {

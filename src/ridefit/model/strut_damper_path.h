@@ -1,7 +1,7 @@
 #pragma once
 
+#include "ridefit/model/asymmetric_damper.h"
 #include "ridefit/model/dahl_friction.h"
-#include "ridefit/model/linear_damper.h"
 #include "ridefit/model/linear_spring.h"
 
 namespace ridefit::model {
@@ -22,10 +22,14 @@ enum class DamperState {
 //
 // so z_c' = (k_tm·(z − z_c) − F_f) / c is explicit: no algebraic loop. z_c is a state in
 // kSlip and kStickSlip, F_f a state in kStickSlip. In kStick, z_c ≡ 0 and F_path = k_tm·z.
+//
+// The damper may be asymmetric (AsymmetricDamper: c = c_r in rebound, z_c' > 0, and r·c_r in
+// compression). Both coefficients are > 0, so z_c' has the sign of F_path − F_f: the branch is
+// chosen from that known force and z_c' stays explicit, still without an algebraic loop.
 template <typename T>
 struct StrutDamperPath {
   LinearSpring<T> top_mount;
-  LinearDamper<T> damper;
+  AsymmetricDamper<T> damper;
   DahlFriction<T> friction;
 
   // Internal states this path adds to a model.
@@ -47,7 +51,7 @@ struct StrutDamperPath {
 
   // Damper deflection rate z_c' for a given path force and friction force.
   T damper_rate_m_per_s(const T& path_force_N, const T& friction_force_N) const {
-    return (path_force_N - friction_force_N) / damper.damping_Ns_per_m;
+    return damper.rate_m_per_s(path_force_N - friction_force_N);
   }
 };
 

@@ -17,9 +17,11 @@ struct StrutTestParameters {
   T gas_stiffness_N_per_m;  // its rate
   T force_offset_N;         // load-cell offset
 
+  // The rig model's damper is symmetric (ratio 1): the hysteresis fit identifies one c, and
+  // strut_test_response.h writes this law out by hand for its Newton solves.
   StrutDamperPath<T> damper_path() const {
     return {{top_mount_stiffness_N_per_m},
-            {damping_Ns_per_m},
+            {damping_Ns_per_m, T(1.0)},
             {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
   }
 };

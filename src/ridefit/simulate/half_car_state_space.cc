@@ -39,7 +39,8 @@ model::AxleRoads unit_road(int input) {
 LinearStateSpace half_car_state_space(const model::HalfCar& car) {
   if (!car.is_linear()) {
     throw std::invalid_argument(
-        "half_car_state_space: the car has Dahl friction or a semi-active law; it is not linear");
+        "half_car_state_space: the car has Dahl friction, a semi-active law or an asymmetric "
+        "damper; it is not linear");
   }
   const int n = car.state_size();
   LinearStateSpace s;

@@ -20,11 +20,12 @@ enum HalfCarLinearOutput : int {
 };
 enum HalfCarRoadInput : int { kFrontRoad = 0, kFrontRoadRate, kRearRoad, kRearRoadRate };
 
-// The linear half car (HalfCar::is_linear(): no Dahl friction, passive damping; struts in slip
-// or stick are linear and keep their extra states) as x' = A·x + B·u, y = C·x + D·u, with u the
-// elevation and rate under each wheel. The matrices are read off the model's own derivatives
-// and outputs, one unit input at a time: for a linear model that is exact (no step, no
-// truncation), and it keeps one source of physics. std::invalid_argument for a non-linear car.
+// The linear half car (HalfCar::is_linear(): no Dahl friction, passive symmetric damping;
+// struts in slip or stick are linear and keep their extra states) as x' = A·x + B·u,
+// y = C·x + D·u, with u the elevation and rate under each wheel. The matrices are read off the
+// model's own derivatives and outputs, one unit input at a time: for a linear model that is exact
+// (no step, no truncation), and it keeps one source of physics. std::invalid_argument for a
+// non-linear car.
 LinearStateSpace half_car_state_space(const model::HalfCar& car);
 
 }  // namespace ridefit::simulate

@@ -1,5 +1,7 @@
 #include "ridefit/simulate/quarter_car_modes.h"
 
+#include <fmt/core.h>
+
 #include <vector>
 
 #include "ridefit/io/input_error.h"
@@ -32,6 +34,12 @@ ModalAnalysis quarter_car_modes(const model::QuarterCar& car) {
   if (car.damper_state() == model::DamperState::kStickSlip) {
     throw InputError(
         "modes are defined for the linear slip and stick models; choose --state slip or stick");
+  }
+  if (!car.is_linear()) {
+    throw InputError(fmt::format(
+        "modes are defined for a linear model; in slip the damper's compression_to_rebound_ratio "
+        "{} makes it nonlinear (use 1 for the symmetric damper, or --state stick)",
+        car.parameters().compression_to_rebound_ratio));
   }
   const auto& p = car.parameters();
   return analyse_modes(quarter_car_state_matrix(car),

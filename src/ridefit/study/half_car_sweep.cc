@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -280,7 +281,11 @@ std::vector<SweepRow> run_half_car_sweep(
   });
   // Roads: a spectrum (frequency domain) or a generated profile (time domain) per road and
   // speed, made once and shared by the runs.
-  const bool linear = models.front().make_model().is_linear();
+  // Every run's car, not only the first: a study may vary what makes a car nonlinear (the
+  // control law, a damper state, a damper's compression_to_rebound_ratio).
+  const bool linear = std::all_of(models.begin(), models.end(), [](const io::HalfCarFile& m) {
+    return m.make_model().is_linear();
+  });
   struct RoadCase {
     std::optional<road::RoadSpectrum> spectrum;
     std::shared_ptr<road::RoadInput> input;
@@ -299,8 +304,8 @@ std::vector<SweepRow> run_half_car_sweep(
                   (sweep.method == SweepMethod::kAuto && linear && c.spectrum);
     if (c.frequency && (!c.spectrum || !linear)) {
       throw InputError(fmt::format(
-          "{}: method frequency needs a linear car (no Dahl friction, passive damping) and "
-          "random roads (iso8608, power_law); road '{}' or the model is not",
+          "{}: method frequency needs a linear car (no Dahl friction, passive symmetric "
+          "damping) and random roads (iso8608, power_law); road '{}' or the model is not",
           sweep.study_file.string(), sweep.roads[point.road].first));
     }
     if (!c.frequency) {
