@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "ridefit/io/gnuplot_figure.h"
+#include "ridefit/io/half_car_file.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "support/cli_runner.h"
 #include "support/passat.h"
@@ -92,6 +93,33 @@ TEST(OptimiseCli, WritesResultModelAndTradeoff) {
   if (!plot.empty()) {
     EXPECT_GT(std::filesystem::file_size(dir.path() / "tuning.png"), 1000u);
   }
+}
+
+TEST(OptimiseCli, OptimisedModelCarriesTheStudysSettings) {
+  // The half car with a slip strut at the front (linear: frequency domain) and the damper split
+  // as a design variable that the model file does not have.
+  testing::TempDir dir("ridefit_optimise_cli");
+  const auto study =
+      dir.write("study.yaml",
+                "model: " + dataset("vehicles/ajayi_half_car.yaml") +
+                    "\nset: {front.suspension: strut, front.damper_state: slip}\n"
+                    "design:\n"
+                    "  - {parameter: front.damping_Ns_per_m, lower: 300, upper: 5000, scale: log}\n"
+                    "  - {parameter: rear.damping_Ns_per_m, lower: 300, upper: 5000, scale: log}\n"
+                    "load_cases: [{road: " +
+                    dataset("excitations/gravel_road_seed001.yaml") +
+                    "}]\nobjective: {metric: seat_acc_wk_rms_m_per_s2}\n"
+                    "constraints: [{metric: front_dynamic_load_ratio, max: 0.2}]\n");
+  const auto run =
+      run_cli("optimise " + study + " -q --json -o " + (dir.path() / "r.yaml").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto j = json_of(run.output);
+  EXPECT_EQ(j["load_cases"][0]["method"], "frequency");
+  const auto model = io::load_half_car(dir.path() / "r_model.yaml");
+  EXPECT_EQ(model.topology.front.suspension, model::AxleSuspension::kStrut);
+  EXPECT_EQ(model.topology.front.damper_state, model::DamperState::kSlip);
+  EXPECT_DOUBLE_EQ(model.parameters.front.damping_Ns_per_m,
+                   j["variables"]["front.damping_Ns_per_m"].get<double>());
 }
 
 TEST(OptimiseCli, ImpossibleLimitsExitOneAndWriteNoModel) {

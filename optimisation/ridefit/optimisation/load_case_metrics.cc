@@ -45,11 +45,11 @@ LoadCaseMetrics quarter_car_case(const TuningStudy& study, const io::QuarterCarF
                                  const LoadCaseRoad& road, Accuracy accuracy,
                                  bool frequency_allowed) {
   const model::QuarterCar car = file.make_model();
-  const bool exact =
-      car.damper_state() != model::DamperState::kStickSlip && road.spectrum.has_value();
+  const bool exact = car.is_linear() && road.spectrum.has_value();
   if (study.evaluation.method == EvaluationMethod::kFrequency && !exact) {
     throw InputError(fmt::format(
-        "{}: evaluation method frequency needs a linear car (damper_state slip or stick) and "
+        "{}: evaluation method frequency needs a linear car (damper_state slip or stick, symmetric "
+        "damper) and "
         "random roads (iso8608, power_law)",
         study.study_file.string()));
   }

@@ -17,11 +17,16 @@ bool is_stick_slip_strut(const model::AxleTopology& axle) {
 
 }  // namespace
 
-std::vector<ModelValue> tuned_values(const TuningStudy& study,
-                                     std::span<const double> design_values) {
-  std::vector<ModelValue> values = study.friction_values;
+std::vector<std::pair<std::string, std::string>> tuned_values(
+    const TuningStudy& study, std::span<const double> design_values) {
+  std::vector<std::pair<std::string, std::string>> values = study.model_settings;
+  for (const auto& [key, value] : study.friction_values) {
+    values.emplace_back(key, fmt::format("{:.17g}", value));
+  }
   for (std::size_t v = 0; v < study.design.size(); ++v) {
-    for (const auto& key : study.design[v].keys) values.emplace_back(key, design_values[v]);
+    for (const auto& key : study.design[v].keys) {
+      values.emplace_back(key, fmt::format("{:.17g}", design_values[v]));
+    }
   }
   return values;
 }

@@ -29,10 +29,10 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
                                const LoadCase& load_case, std::span<const double> design_values,
                                const std::string& origin);
 
-// Every key the design sets, with its value (what an optimised model file changes), after the
-// study's friction values.
-std::vector<ModelValue> tuned_values(const TuningStudy& study,
-                                     std::span<const double> design_values);
+// Every key an optimised model file changes, as text: the study's `set:` values, its friction
+// values, then the design values (numbers with 17 significant digits).
+std::vector<std::pair<std::string, std::string>> tuned_values(
+    const TuningStudy& study, std::span<const double> design_values);
 
 // True when some damper of the model is stick/slip with a Coulomb force above zero.
 bool has_friction(const TuningModel& model);

@@ -79,6 +79,8 @@ DesignVariable read_design(const io::YamlMap& entry, const TuningStudy& study) {
     v.start = entry.number("start");
   } else {
     std::optional<double> value = model_value(study.model_file, v.keys.front());
+    // Optional model keys that default on their own start from that default.
+    if (!value && v.keys.front().ends_with("compression_to_rebound_ratio")) value = 1.0;
     for (const auto& [key, text] : study.model_settings) {
       if (key == v.keys.front()) value = std::stod(text);  // a number: the model accepted it
     }

@@ -7,7 +7,7 @@
 namespace ridefit::io {
 
 void write_model_with_values(const std::filesystem::path& model_file,
-                             const std::vector<std::pair<std::string, double>>& values,
+                             const std::vector<std::pair<std::string, std::string>>& values,
                              const std::filesystem::path& output_file, const std::string& comment) {
   YAML::Node root = YAML::LoadFile(model_file.string());
   for (const auto& [key, value] : values) {

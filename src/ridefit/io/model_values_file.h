@@ -7,13 +7,14 @@
 
 namespace ridefit::io {
 
-// Writes `model_file` again with numeric keys replaced, each by its dotted path
+// Writes `model_file` again with keys replaced, each by its dotted path
 // ("front.damping_Ns_per_m"; a quarter car's keys have no dot), atomically, with `comment` as
 // a first line. Everything else of the file (keys, order, other values) stays as it was, so
-// the result loads wherever the input did. A key the file does not have is added where its
-// path says (the caller has checked it against the model).
+// the result loads wherever the input did. Values are written as plain YAML scalars (a number
+// as its text, e.g. "878.55", reads back as that number). A key the file does not have is added
+// where its path says (the caller has checked it against the model).
 void write_model_with_values(const std::filesystem::path& model_file,
-                             const std::vector<std::pair<std::string, double>>& values,
+                             const std::vector<std::pair<std::string, std::string>>& values,
                              const std::filesystem::path& output_file, const std::string& comment);
 
 }  // namespace ridefit::io

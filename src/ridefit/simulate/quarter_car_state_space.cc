@@ -1,48 +1,35 @@
 #include "ridefit/simulate/quarter_car_state_space.h"
 
-#include <array>
+#include "ridefit/simulate/probe_state_space.h"
+
 #include <stdexcept>
 
 namespace ridefit::simulate {
 
 LinearStateSpace quarter_car_state_space(const model::QuarterCar& car) {
-  if (car.damper_state() == model::DamperState::kStickSlip) {
+  if (!car.is_linear()) {
     throw std::invalid_argument(
-        "quarter_car_state_space: a stick/slip car has Dahl friction; it is not linear");
+        "quarter_car_state_space: the car has Dahl friction or an asymmetric damper; it is not "
+        "linear");
   }
-  const int n = car.state_size();
-  LinearStateSpace s;
-  s.A.resize(n, n);
-  s.B.resize(n, 2);
-  s.C.resize(kQuarterCarLinearOutputs, n);
-  s.D.resize(kQuarterCarLinearOutputs, 2);
+  auto unit_road = [](int input) {
+    road::RoadSample road;
+    if (input == 0) road.elevation_m = 1.0;
+    if (input == 1) road.rate_m_per_s = 1.0;
+    return road;
+  };
+  LinearStateSpace s = probe_state_space<model::QuarterCar::kMaxStates>(
+      car.state_size(), 2, kQuarterCarLinearOutputs,
+      [&](const double* x, int input, double* xdot) { car.derivatives(x, unit_road(input), xdot); },
+      [&](const double* x, int input, double* y) {
+        const model::QuarterCarOutputs out = car.outputs(x, unit_road(input));
+        y[kQuarterBodyAcc] = out.body_acc_m_per_s2;
+        y[kQuarterWheelAcc] = out.wheel_acc_m_per_s2;
+        y[kQuarterTravel] = out.travel_m;
+        y[kQuarterTyreForce] = out.tyre_force_N;
+      });
   s.input_names = {"road", "road_rate"};
   s.output_names = {"body_acc", "wheel_acc", "travel", "tyre_force"};
-  // Sized for the largest state so that no branch of derivatives() can read past the end.
-  std::array<double, model::QuarterCar::kMaxStates> x{}, xdot{};
-  auto probe = [&](const road::RoadSample& road, auto&& column_of_a, auto&& column_of_c) {
-    car.derivatives(x.data(), road, xdot.data());
-    for (int i = 0; i < n; ++i) column_of_a(i) = xdot[static_cast<std::size_t>(i)];
-    const model::QuarterCarOutputs out = car.outputs(x.data(), road);
-    const double values[kQuarterCarLinearOutputs] = {out.body_acc_m_per_s2, out.wheel_acc_m_per_s2,
-                                                     out.travel_m, out.tyre_force_N};
-    for (int k = 0; k < kQuarterCarLinearOutputs; ++k) column_of_c(k) = values[k];
-  };
-  // Linear and measured from equilibrium: f(0, 0) = 0, so each unit probe gives a column.
-  for (int j = 0; j < n; ++j) {
-    x[static_cast<std::size_t>(j)] = 1.0;
-    probe(
-        road::RoadSample{}, [&](int i) -> double& { return s.A(i, j); },
-        [&](int k) -> double& { return s.C(k, j); });
-    x[static_cast<std::size_t>(j)] = 0.0;
-  }
-  for (int j = 0; j < 2; ++j) {
-    road::RoadSample unit;
-    (j == 0 ? unit.elevation_m : unit.rate_m_per_s) = 1.0;
-    probe(
-        unit, [&](int i) -> double& { return s.B(i, j); },
-        [&](int k) -> double& { return s.D(k, j); });
-  }
   return s;
 }
 

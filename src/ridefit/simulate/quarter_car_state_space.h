@@ -15,10 +15,10 @@ enum QuarterCarLinearOutput : int {
   kQuarterCarLinearOutputs
 };
 
-// The slip or stick quarter car (no Dahl element, so linear) as x' = A·x + B·u, y = C·x + D·u
-// with u = (road elevation, road rate), read off the model's own derivatives and outputs one
-// unit input at a time, exactly as half_car_state_space does. std::invalid_argument for a
-// stick/slip car.
+// The slip or stick quarter car with a symmetric damper (QuarterCar::is_linear()) as x' = A·x +
+// B·u, y = C·x + D·u with u = (road elevation, road rate), read off the model's own derivatives and
+// outputs one unit input at a time, exactly as half_car_state_space does. std::invalid_argument for
+// a car that is not linear.
 LinearStateSpace quarter_car_state_space(const model::QuarterCar& car);
 
 }  // namespace ridefit::simulate

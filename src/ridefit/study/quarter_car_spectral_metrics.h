@@ -13,7 +13,7 @@ namespace ridefit::study {
 // S_y(f) = |H_y,h(f) + jω·H_y,ḣ(f)|²·S(f) at `points` log-spaced frequencies; RMS = √∫S_y df,
 // Wk-weighted RMS = √∫|Wk|²·S_y df; the peak travel is the expected largest |travel| over the
 // road's duration less `settle_s` (signal/expected_peak.h); stuck share 0. The stationary values
-// a long simulation converges to. std::invalid_argument for a stick/slip car.
+// a long simulation converges to. std::invalid_argument for a car that is not linear.
 QuarterCarMetrics quarter_car_spectral_metrics(const model::QuarterCar& car,
                                                const road::RoadSpectrum& road,
                                                std::size_t points = 1000, double settle_s = 0.0);
