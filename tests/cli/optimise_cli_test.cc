@@ -259,8 +259,86 @@ INSTANTIATE_TEST_SUITE_P(
         BadStudy{"friction_without_friction_element",
                  "set: {damper_state: slip}\nfriction: {coulomb_force_N: 30}\n" + passat_study(),
                  "no friction element"},
-        BadStudy{"typo_in_study", passat_study() + "objectiv: {metric: x}\n", "objectiv"}),
+        BadStudy{"typo_in_study", passat_study() + "objectiv: {metric: x}\n", "objectiv"},
+        BadStudy{"design_key_also_in_a_case",
+                 replace(passat_study(), "speed_km_per_h: 30, weight: 2}",
+                         "speed_km_per_h: 30, weight: 2, set: {damping_Ns_per_m: 2000}}"),
+                 "which the design variable 'damping_Ns_per_m' varies"},
+        BadStudy{"settle_longer_than_the_run",
+                 replace(passat_study(), "evaluation: {duration_s: 10}",
+                         "evaluation: {duration_s: 10, settle_s: 20}"),
+                 "evaluation.settle_s is 20 s"},
+        BadStudy{"run_longer_than_the_road",
+                 replace(passat_study(), "evaluation: {duration_s: 10}",
+                         "evaluation: {duration_s: 100}"),
+                 "evaluation.duration_s is 100 s, longer than load case 'smooth'"},
+        BadStudy{"rate_too_low_for_wk",
+                 replace(passat_study(), "evaluation: {duration_s: 10}",
+                         "evaluation: {duration_s: 10, output_rate_Hz: 100}"),
+                 "evaluation.output_rate_Hz is 100 Hz"},
+        BadStudy{"load_cases_not_a_list",
+                 replace(passat_study(), "load_cases:\n", "load_cases: {road: x.yaml}\nx_cases:\n"),
+                 "is not a list"},
+        BadStudy{"cross_rule_at_a_corner",
+                 "model: " + dataset("vehicles/ajayi_half_car.yaml") +
+                     "\nset: {control.law: skyhook}\ndesign:\n"
+                     "  - {parameter: control.min_damping_Ns_per_m, lower: 100, upper: 2500}\n"
+                     "  - {parameter: control.max_damping_Ns_per_m, lower: 500, upper: 3000}\n"
+                     "load_cases: [{road: " +
+                     dataset("excitations/smooth_road_seed001.yaml") +
+                     "}]\nobjective: {metric: seat_acc_wk_rms_m_per_s2}\n",
+                 "design corner"}),
     [](const ::testing::TestParamInfo<BadStudy>& p) { return p.param.name; });
+
+std::string text_of(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(OptimiseCli, OutputsNeverReplaceInputsOrEachOther) {
+  testing::TempDir dir("ridefit_optimise_cli");
+  const std::string model = text_of(dataset("vehicles/passat_b8_front.yaml"));
+  const auto model_path = dir.write("car.yaml", model);
+  const std::string road = text_of(dataset("excitations/iso8608_class_a_50kmh.yaml"));
+  const auto road_path = dir.write("road.yaml", road);
+  const auto study =
+      dir.write("study.yaml",
+                "model: car.yaml\ndesign: [{parameter: damping_Ns_per_m, lower: 300, upper: "
+                "6000}]\nload_cases: [{road: road.yaml}]\n"
+                "objective: {metric: body_acc_wk_rms_m_per_s2}\nevaluation: {duration_s: 5}\n");
+  for (const std::string& flags : {"-o " + road_path, "--journal " + model_path,
+                                   "-o " + (dir.path() / "r.yaml").string() + " --journal " +
+                                       (dir.path() / "r.yaml").string()}) {
+    const auto run = run_cli("optimise " + study + " -q " + flags);
+    EXPECT_EQ(run.exit_code, 2) << flags << "\n" << run.output;
+  }
+  EXPECT_EQ(text_of(model_path), model);
+  EXPECT_EQ(text_of(road_path), road);
+  // --resume on a file that is not a journal leaves it as it was.
+  const auto notes = dir.write("notes.txt", "hello world");
+  EXPECT_EQ(run_cli("optimise " + study + " -q --resume " + notes).exit_code, 2);
+  EXPECT_EQ(text_of(notes), "hello world");
+  // A study that cannot run does not replace an existing journal.
+  const auto journal = (dir.path() / "keep.journal").string();
+  ASSERT_EQ(run_cli("optimise " + study + " -q --journal " + journal).exit_code, 0);
+  const std::string kept = text_of(journal);
+  const auto broken = dir.write(
+      "broken.yaml", replace(text_of(study), "duration_s: 5", "duration_s: 5, settle_s: 30"));
+  EXPECT_EQ(run_cli("optimise " + broken + " -q --journal " + journal).exit_code, 2);
+  EXPECT_EQ(text_of(journal), kept);
+}
+
+TEST(OptimiseCli, PlotWithFrictionAndNoConstraints) {
+  if (!io::gnuplot_available()) GTEST_SKIP() << "gnuplot not installed";
+  testing::TempDir dir("ridefit_optimise_cli");
+  const auto study =
+      dir.write("study.yaml", replace(passat_study("[]", ""), "constraints: []\n", ""));
+  const auto run = run_cli("optimise " + study + " -q --plot " + (dir.path() / "p.png").string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_GT(std::filesystem::file_size(dir.path() / "p.png"), 1000u);
+}
 
 TEST(OptimiseCli, ResumeRefusesAnotherStudysJournal) {
   testing::TempDir dir("ridefit_optimise_cli");

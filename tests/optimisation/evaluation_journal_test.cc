@@ -16,6 +16,8 @@
 namespace ridefit::optimisation {
 namespace {
 
+const EvaluationJournal::Shape kShape{2, 2, 2};
+
 JournalRecord record(double x) {
   return {"study/search",
           {x, 1.0 / 3.0},
@@ -31,7 +33,7 @@ TEST(EvaluationJournal, ResumeFindsEveryRecordBitForBit) {
     journal.append(record(1234.5678901234567));
     journal.append(record(std::nextafter(887.0, 900.0)));
   }
-  const auto journal = EvaluationJournal::resume(path, "abc");
+  const auto journal = EvaluationJournal::resume(path, "abc", kShape);
   EXPECT_EQ(journal.size(), 2u);
   const auto found =
       journal.find("study/search", std::vector{std::nextafter(887.0, 900.0), 1.0 / 3.0});
@@ -53,11 +55,11 @@ TEST(EvaluationJournal, TornLastLineIsCutAndAppendingContinues) {
   }
   std::ofstream(path, std::ios::app) << "{\"variant\":\"study/search\",\"x\":[2.0,";  // killed
   {
-    auto journal = EvaluationJournal::resume(path, "abc");
+    auto journal = EvaluationJournal::resume(path, "abc", kShape);
     EXPECT_EQ(journal.size(), 1u);
     journal.append(record(3.0));
   }
-  const auto journal = EvaluationJournal::resume(path, "abc");
+  const auto journal = EvaluationJournal::resume(path, "abc", kShape);
   EXPECT_EQ(journal.size(), 2u);
   EXPECT_TRUE(journal.find("study/search", std::vector{3.0, 1.0 / 3.0}).has_value());
 }
@@ -66,18 +68,47 @@ TEST(EvaluationJournal, ForeignOrBrokenJournalsAreInputErrors) {
   testing::TempDir dir("ridefit_journal");
   const auto path = dir.path() / "run.journal";
   { EvaluationJournal::create(path, "abc").append(record(1.0)); }
-  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::resume(path, "def"); },
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::resume(path, "def", kShape); },
                                           "another study"));
   EXPECT_TRUE(testing::throws_input_error(
-      [&] { EvaluationJournal::resume(dir.path() / "missing", "abc"); }, "no such journal"));
+      [&] { EvaluationJournal::resume(dir.path() / "missing", "abc", kShape); },
+      "no such journal"));
   const auto csv = dir.write("data.csv", "time[s],x[m]\n0,1\n");
-  EXPECT_TRUE(
-      testing::throws_input_error([&] { EvaluationJournal::resume(csv, "abc"); }, "line 1"));
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::resume(csv, "abc", kShape); },
+                                          "line 1"));
   const auto middle =
       dir.write("broken.journal",
                 "{\"format\":\"ridefit-optimise-journal-1\",\"study\":\"abc\"}\n{\"variant\":1}\n");
-  EXPECT_TRUE(
-      testing::throws_input_error([&] { EvaluationJournal::resume(middle, "abc"); }, "line 2"));
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::resume(middle, "abc", kShape); },
+                                          "line 2"));
+}
+
+TEST(EvaluationJournal, WrongShapesAreInputErrorsAndOtherFilesAreNeverTouched) {
+  testing::TempDir dir("ridefit_journal");
+  const auto path = dir.path() / "run.journal";
+  { EvaluationJournal::create(path, "abc").append(record(1.0)); }
+  EXPECT_TRUE(testing::throws_input_error(
+      [&] {
+        EvaluationJournal::resume(path, "abc", {3, 2, 2});
+      },
+      "line 2"));
+  EXPECT_TRUE(testing::throws_input_error(
+      [&] {
+        EvaluationJournal::resume(path, "abc", {2, 1, 2});
+      },
+      "2 load cases, the study has 1"));
+  EXPECT_TRUE(testing::throws_input_error(
+      [&] {
+        EvaluationJournal::resume(path, "abc", {2, 2, 8});
+      },
+      "metrics per case"));
+  // A file that is not a journal, without a final newline, stays as it was.
+  const auto text = dir.write("notes.txt", "hello world");
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::resume(text, "abc", kShape); },
+                                          "empty"));
+  EXPECT_EQ(std::filesystem::file_size(text), 11u);
+  EXPECT_TRUE(testing::throws_input_error(
+      [&] { EvaluationJournal::resume(dir.path(), "abc", kShape); }, "is a directory"));
 }
 
 TEST(StudyFingerprint, ChangesWithTheModelFile) {

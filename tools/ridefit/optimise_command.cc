@@ -209,7 +209,7 @@ io::Figure figure_of(const opt::TuningProblem& problem, const Outcome& o) {
   }
   history.x_range = std::pair{0.0, static_cast<double>(o.aware.history.size() + 1)};
   figure.panels.push_back(history);
-  if (!o.tradeoff.empty() || o.friction) {
+  if (!o.tradeoff.empty() || (o.friction && !study.constraints.empty())) {
     const std::string metric = study.tradeoff
                                    ? study.constraints[study.tradeoff->constraint].metric
                                    : (study.constraints.empty() ? study.objective.metric
@@ -251,8 +251,12 @@ void print_table(const opt::TuningProblem& problem, const Outcome& o, double wal
       study.study_file.string(), opt::to_string(study.optimiser.algorithm), study.optimiser.starts,
       run.nlopt_result, run.evaluations, run.computed, run.evaluations - run.computed, wall_time_s);
   std::cout << (run.feasible ? "Optimum (limits hold at the re-evaluated point):\n"
-                             : "INFEASIBLE: no design found that holds every limit; the least "
-                               "violating design:\n");
+                             : "INFEASIBLE: the search found no design that holds every limit; "
+                               "the least violating design:\n");
+  if (run.feasible && run.nlopt_result.starts_with("max")) {
+    std::cout << "  (the search stopped at its evaluation or time limit: the best design found, "
+                 "perhaps not converged)\n";
+  }
   for (std::size_t v = 0; v < run.best.x.size(); ++v) {
     std::cout << fmt::format("  {:<36} {:>12.6g}   (start {:g}, bounds {:g} … {:g})\n",
                              study.design[v].name, run.best.x[v], study.design[v].start,
@@ -263,7 +267,9 @@ void print_table(const opt::TuningProblem& problem, const Outcome& o, double wal
   for (const auto& m : run.margins) {
     std::cout << fmt::format("  {:<52} value {:>10.5g}  margin {:>+10.4g} ({:+.2f} %) {}\n",
                              m.description, m.value, m.margin, 100 * m.relative_margin,
-                             m.holds ? "holds" : "VIOLATED");
+                             !m.holds          ? "VIOLATED"
+                             : m.margin >= 0.0 ? "holds"
+                                               : "within tolerance");
   }
   for (std::size_t c = 0; c < study.load_cases.size(); ++c) {
     std::cout << fmt::format(
@@ -309,42 +315,69 @@ void print_table(const opt::TuningProblem& problem, const Outcome& o, double wal
 
 void run(const OptimiseFlags& flags) {
   const std::filesystem::path study_path = flags.study_file;
-  const std::vector<std::filesystem::path> inputs = {study_path};
-  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
-  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
   if (!flags.resume_file.empty() && !flags.journal_file.empty()) {
     throw InputError(
         "--resume JOURNAL continues that journal; give --resume or --journal, not both");
   }
+  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, {study_path}, "-o");
+  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, {study_path}, "--plot");
   opt::TuningStudy study = opt::load_tuning_study(study_path);
   if (flags.threads >= 0) study.evaluation.threads = static_cast<unsigned>(flags.threads);
+  // Every file the study reads: no output may replace one of them, nor another output.
+  std::vector<std::filesystem::path> inputs = {study_path, study.model_file};
+  if (!study.fitted_model.empty()) inputs.push_back(study.fitted_model);
+  for (const auto& c : study.load_cases) inputs.push_back(c.road_file);
   const std::string model_out =
       flags.output_file.empty() ? "" : sibling(flags.output_file, "_model.yaml").string();
   const std::string tradeoff_csv = flags.output_file.empty() || !study.tradeoff
                                        ? ""
                                        : sibling(flags.output_file, "_tradeoff.csv").string();
-  for (const auto& path : {model_out, tradeoff_csv}) {
-    if (!path.empty()) {
-      std::vector<std::filesystem::path> all = inputs;
-      all.push_back(study.model_file);
-      io::check_output_file(path, all, "-o (derived)");
+  const std::filesystem::path journal_path =
+      !flags.resume_file.empty()    ? std::filesystem::path(flags.resume_file)
+      : !flags.journal_file.empty() ? std::filesystem::path(flags.journal_file)
+      : !flags.output_file.empty()  ? sibling(flags.output_file, ".journal")
+                                   : std::filesystem::path(study_path.stem().string() + ".journal");
+  const std::vector<std::pair<std::string, std::string>> outputs = {
+      {"-o", flags.output_file},
+      {"-o (the optimised model)", model_out},
+      {"-o (the trade-off CSV)", tradeoff_csv},
+      {flags.resume_file.empty() ? "--journal" : "--resume", journal_path.string()},
+      {"--plot", flags.plot_file}};
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].second.empty()) continue;
+    if (i == 3 && !flags.resume_file.empty()) {
+      for (const auto& input : inputs) {
+        if (std::filesystem::exists(input) && std::filesystem::exists(journal_path) &&
+            std::filesystem::equivalent(input, journal_path)) {
+          throw InputError(fmt::format("--resume {}: that is an input of the study, not a journal",
+                                       journal_path.string()));
+        }
+      }
+    } else {
+      io::check_output_file(outputs[i].second, inputs, outputs[i].first);
+    }
+    for (std::size_t k = 0; k < i; ++k) {
+      if (!outputs[k].second.empty() &&
+          std::filesystem::absolute(outputs[k].second).lexically_normal() ==
+              std::filesystem::absolute(outputs[i].second).lexically_normal()) {
+        throw InputError(fmt::format("{} {} is also the {} file; give each output its own path",
+                                     outputs[i].first, outputs[i].second, outputs[k].first));
+      }
     }
   }
-  // The journal: continued with --resume, else new at --journal, else next to -o, else next to
-  // the study in the current directory.
+  // The roads are made (and every remaining check done) before the journal is opened, so a
+  // study that cannot run never replaces an existing journal.
+  opt::TuningProblem problem(study);
   const std::string fingerprint = opt::study_fingerprint(study);
+  const opt::EvaluationJournal::Shape shape{study.design.size(), study.load_cases.size(),
+                                            opt::metric_names(study.kind).size()};
   std::optional<opt::EvaluationJournal> journal;
   if (!flags.resume_file.empty()) {
-    journal.emplace(opt::EvaluationJournal::resume(flags.resume_file, fingerprint));
+    journal.emplace(opt::EvaluationJournal::resume(journal_path, fingerprint, shape));
   } else {
-    const std::filesystem::path path =
-        !flags.journal_file.empty() ? std::filesystem::path(flags.journal_file)
-        : !flags.output_file.empty()
-            ? sibling(flags.output_file, ".journal")
-            : std::filesystem::path(study_path.stem().string() + ".journal");
-    io::check_output_file(path, inputs, "--journal");
-    journal.emplace(opt::EvaluationJournal::create(path, fingerprint));
+    journal.emplace(opt::EvaluationJournal::create(journal_path, fingerprint));
   }
+  problem.attach_journal(&*journal);
   if (!flags.quiet) {
     std::cerr << fmt::format("optimise: journal {}{}\n", journal->path().string(),
                              flags.resume_file.empty()
@@ -352,7 +385,6 @@ void run(const OptimiseFlags& flags) {
                                  : fmt::format(" ({} evaluations to reuse)", journal->size()));
   }
   const auto started = std::chrono::steady_clock::now();
-  opt::TuningProblem problem(study, &*journal);
   std::string stage;
   const opt::ProgressSink progress = [&](const std::string& line) {
     if (!flags.quiet) std::cerr << "optimise" << stage << ": " << line << "\n";
@@ -373,9 +405,10 @@ void run(const OptimiseFlags& flags) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   const std::string written_model = o.aware.feasible ? model_out : "";
-  const nlohmann::json result = result_json(problem, o, flags, written_model, tradeoff_csv,
+  const std::string written_tradeoff = o.tradeoff.empty() ? "" : tradeoff_csv;
+  const nlohmann::json result = result_json(problem, o, flags, written_model, written_tradeoff,
                                             journal->path().string(), wall_time_s);
-  if (!tradeoff_csv.empty()) write_tradeoff_csv(problem, o, tradeoff_csv);
+  if (!written_tradeoff.empty()) write_tradeoff_csv(problem, o, written_tradeoff);
   if (!written_model.empty()) {
     io::write_model_with_values(
         problem.study().model_file, opt::tuned_values(problem.study(), o.aware.best.x),
@@ -395,7 +428,7 @@ void run(const OptimiseFlags& flags) {
     print_table(problem, o, wall_time_s);
     if (!flags.output_file.empty()) std::cout << "Result: " << flags.output_file << "\n";
     if (!written_model.empty()) std::cout << "Optimised model: " << written_model << "\n";
-    if (!tradeoff_csv.empty()) std::cout << "Trade-off: " << tradeoff_csv << "\n";
+    if (!written_tradeoff.empty()) std::cout << "Trade-off: " << written_tradeoff << "\n";
     if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
   }
   if (!o.aware.feasible) {

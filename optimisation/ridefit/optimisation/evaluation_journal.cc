@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -60,56 +61,76 @@ EvaluationJournal EvaluationJournal::create(const std::filesystem::path& path,
 }
 
 EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
-                                            const std::string& fingerprint) {
+                                            const std::string& fingerprint, const Shape& shape) {
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(fmt::format("--resume {}: is a directory, not a journal file", path.string()));
+  }
   if (!std::filesystem::is_regular_file(path)) {
     throw InputError(fmt::format("--resume {}: no such journal file", path.string()));
   }
-  std::string text = read_all(path);
-  // A run killed while writing leaves a line without its newline: cut it off.
+  const std::string text = read_all(path);
+  // A run killed while writing leaves a last line without its newline: it is not read, and cut
+  // off once the journal is known to be this study's.
   const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
-  if (complete < text.size()) {
-    text.resize(complete);
-    std::filesystem::resize_file(path, complete);
-  }
-  std::istringstream lines(text);
+  std::istringstream lines(text.substr(0, complete));
   std::string line;
+  // Line 1 first: nothing is touched unless this is the study's own journal.
+  nlohmann::json header;
+  if (!std::getline(lines, line) || line.empty()) {
+    throw InputError(fmt::format("--resume {}: the journal is empty (or its first line is torn)",
+                                 path.string()));
+  }
+  try {
+    header = nlohmann::json::parse(line);
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(
+        fmt::format("--resume {}: line 1 is not JSON; is this a ridefit journal?", path.string()));
+  }
+  if (!header.is_object() || header.value("format", "") != kFormat) {
+    throw InputError(fmt::format(
+        "--resume {}: not a ridefit optimise journal (line 1 has no \"format\": \"{}\")",
+        path.string(), kFormat));
+  }
+  if (header.value("study", "") != fingerprint) {
+    throw InputError(fmt::format(
+        "--resume {}: the journal belongs to another study or to different model or road "
+        "files (fingerprint {} here, {} in the journal); start without --resume",
+        path.string(), fingerprint, header.value("study", "")));
+  }
   std::map<std::string, JournalRecord> records;
-  std::size_t number = 0;
+  std::size_t number = 1;
   while (std::getline(lines, line)) {
     ++number;
-    nlohmann::json j;
+    auto bad = [&](const std::string& why) {
+      return InputError(fmt::format("--resume {}: line {} is not an evaluation of this study ({})",
+                                    path.string(), number, why));
+    };
+    JournalRecord r;
     try {
-      j = nlohmann::json::parse(line);
-    } catch (const nlohmann::json::exception&) {
-      throw InputError(fmt::format("--resume {}: line {} is not JSON; is this a ridefit journal?",
-                                   path.string(), number));
-    }
-    if (number == 1) {
-      if (!j.is_object() || j.value("format", "") != kFormat) {
-        throw InputError(
-            fmt::format("--resume {}: not a ridefit optimise journal (line 1 has no "
-                        "\"format\": \"{}\")",
-                        path.string(), kFormat));
-      }
-      if (j.value("study", "") != fingerprint) {
-        throw InputError(fmt::format(
-            "--resume {}: the journal belongs to another study or to different model or road "
-            "files (fingerprint {} here, {} in the journal); start without --resume",
-            path.string(), fingerprint, j.value("study", "")));
-      }
-      continue;
-    }
-    try {
-      JournalRecord r = record_of(j);
-      records[key(r.variant, r.x)] = std::move(r);
+      r = record_of(nlohmann::json::parse(line));
     } catch (const std::exception& e) {
-      throw InputError(fmt::format("--resume {}: line {} is not an evaluation ({})", path.string(),
-                                   number, e.what()));
+      throw bad(e.what());
     }
+    if (r.x.size() != shape.variables) {
+      throw bad(fmt::format("{} design values, the study has {}", r.x.size(), shape.variables));
+    }
+    if (r.case_values.size() != shape.cases) {
+      throw bad(fmt::format("{} load cases, the study has {}", r.case_values.size(), shape.cases));
+    }
+    for (const auto& values : r.case_values) {
+      if (values.size() != shape.metrics) {
+        throw bad(fmt::format("{} metrics per case, expected {}", values.size(), shape.metrics));
+      }
+      for (double v : values) {
+        if (!std::isfinite(v) || v < 0.0) throw bad(fmt::format("a metric is {}", v));
+      }
+    }
+    for (double v : r.x) {
+      if (!std::isfinite(v)) throw bad("a design value is not finite");
+    }
+    records[key(r.variant, r.x)] = std::move(r);
   }
-  if (number == 0) {
-    throw InputError(fmt::format("--resume {}: the journal is empty", path.string()));
-  }
+  if (complete < text.size()) std::filesystem::resize_file(path, complete);
   std::ofstream out(path, std::ios::app);
   if (!out) throw InputError(fmt::format("--resume {}: cannot be appended to", path.string()));
   EvaluationJournal journal(path, std::move(out));

@@ -35,11 +35,19 @@ class EvaluationJournal {
   // A new journal at `path` (an existing file is replaced).
   static EvaluationJournal create(const std::filesystem::path& path,
                                   const std::string& fingerprint);
+  // What each line of this study's journal holds.
+  struct Shape {
+    std::size_t variables = 0;
+    std::size_t cases = 0;
+    std::size_t metrics = 0;
+  };
   // Continues the journal at `path`. InputError when it is missing, not a ridefit journal, or
-  // belongs to another study (fingerprint); a torn last line (the run was killed while
-  // writing) is cut off; any other malformed line is an InputError naming its line number.
+  // belongs to another study (fingerprint) — checked before anything is written; then a torn
+  // last line (the run was killed while writing) is cut off, and any other malformed line (not
+  // JSON, or x, cases or metrics of another size than `shape`, or a metric that is not a finite
+  // number >= 0) is an InputError naming its line number.
   static EvaluationJournal resume(const std::filesystem::path& path,
-                                  const std::string& fingerprint);
+                                  const std::string& fingerprint, const Shape& shape);
 
   EvaluationJournal(EvaluationJournal&& other) noexcept;
 

@@ -33,6 +33,19 @@ std::vector<double> values_of(const std::vector<std::pair<std::string, double>>&
   return values;
 }
 
+// The record a time-domain run would evaluate: the study's duration (or the road's) less the
+// settling time (checked to leave at least 1 s when the study was read).
+double evaluated_duration_s(const TuningStudy& study, const road::RoadSpectrum& road) {
+  const double length =
+      study.evaluation.duration_s > 0.0 ? study.evaluation.duration_s : road.duration_s;
+  return length - study.evaluation.settle_s;
+}
+
+// quarter_car_spectral_metrics takes the settling time off the road's own duration.
+double settle_for_peak(const TuningStudy& study, const road::RoadSpectrum& road) {
+  return road.duration_s - evaluated_duration_s(study, road);
+}
+
 simulate::IntegratorOptions integrator(const TuningStudy& study, Accuracy accuracy) {
   simulate::IntegratorOptions options;
   options.relative_tolerance = accuracy == Accuracy::kVerify
@@ -58,7 +71,7 @@ LoadCaseMetrics quarter_car_case(const TuningStudy& study, const io::QuarterCarF
     return {values_of(study::quarter_car_spectral_metrics(
                           car, *road.spectrum,
                           static_cast<std::size_t>(study.evaluation.frequency_points * factor),
-                          study.evaluation.settle_s)
+                          settle_for_peak(study, *road.spectrum))
                           .named()),
             true};
   }
@@ -91,10 +104,10 @@ LoadCaseMetrics half_car_case(const TuningStudy& study, const io::HalfCarFile& f
     result.values = values_of(study::half_car_spectral_metrics(spectra, file.parameters).named());
     for (auto output : {simulate::kFrontTravel, simulate::kRearTravel}) {
       const auto& psd = spectra.psd[static_cast<std::size_t>(output)];
-      result.values.push_back(signal::expected_gaussian_peak(
-          signal::spectral_moment(spectra.frequency_Hz, psd, 0),
-          signal::spectral_moment(spectra.frequency_Hz, psd, 2),
-          std::max(road.spectrum->duration_s - study.evaluation.settle_s, 1.0)));
+      result.values.push_back(
+          signal::expected_gaussian_peak(signal::spectral_moment(spectra.frequency_Hz, psd, 0),
+                                         signal::spectral_moment(spectra.frequency_Hz, psd, 2),
+                                         evaluated_duration_s(study, *road.spectrum)));
     }
     result.frequency_domain = true;
     return result;

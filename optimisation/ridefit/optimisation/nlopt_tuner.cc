@@ -226,10 +226,17 @@ OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
   OptimisationRun run;
   run.variant = variant;
   run.limits = limits;
+  // The search aims inside each limit by the constraint tolerance, so that the optimum it
+  // converges to (from either side) holds the limit itself, not only within the tolerance.
+  std::vector<double> aim = limits;
+  for (std::size_t i = 0; i < aim.size(); ++i) {
+    const double inset = study.optimiser.constraint_tolerance * aim[i];
+    aim[i] += study.constraints[i].is_upper ? -inset : inset;
+  }
   Search search;
   search.problem = &problem;
   search.variant = variant;
-  search.limits = &limits;
+  search.limits = &aim;
   search.progress = &progress;
   search.run = &run;
   std::mt19937_64 random(study.optimiser.seed);
@@ -247,7 +254,7 @@ OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
   // The reported optimum, evaluated again at the verification accuracy.
   run.verified = problem.evaluate(variant, Accuracy::kVerify, run.best.x);
   run.feasible = problem.feasible(run.verified, limits);
-  if (!run.feasible && search.best_feasible) {
+  if (!run.feasible && (search.best_feasible || search.best_violation < 0.01)) {
     // The optimum sits on a limit that the search accuracy placed slightly differently: polish
     // it with COBYLA at the verification accuracy, in small steps from where the search ended.
     OptimiserSettings polish = study.optimiser;

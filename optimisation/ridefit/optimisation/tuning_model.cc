@@ -48,12 +48,15 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
         damper_state = text;
         continue;
       }
+      if (key == "model") {
+        throw InputError(fmt::format("{}: the model type cannot be replaced", origin));
+      }
       try {
         std::size_t used = 0;
         overrides[key] = std::stod(text, &used);
         if (used != text.size()) throw std::invalid_argument(text);
       } catch (const std::logic_error&) {
-        throw InputError(fmt::format("{}: set {}: '{}' is not a number", origin, key, text));
+        throw InputError(fmt::format("{} {}: '{}' is not a number", origin, key, text));
       }
     }
     for (const auto& [key, value] : values) overrides[key] = value;
@@ -65,7 +68,13 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
       }
       model.quarter = std::move(file);
     } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: {}", origin, e.what()));
+      // The loader speaks of the command line; here the values came from the study.
+      std::string message = e.what();
+      const std::string cli = "(given on the command line as --set ";
+      if (const auto at = message.find(cli); at != std::string::npos) {
+        message.replace(at, cli.size(), "(given as ");
+      }
+      throw InputError(fmt::format("{}: {}", origin, message));
     }
     return model;
   }

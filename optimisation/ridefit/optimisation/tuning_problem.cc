@@ -104,6 +104,8 @@ Evaluation TuningProblem::evaluate(FrictionVariant variant, Accuracy accuracy,
                                       variant == FrictionVariant::kStudy);
     } catch (const RunError& e) {
       throw RunError(fmt::format("{}: {}", origin, e.what()));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", origin, e.what()));
     }
   });
   for (std::size_t c = 0; c < cases; ++c) {
@@ -155,7 +157,7 @@ std::vector<ConstraintMargin> TuningProblem::margins(const Evaluation& e,
     m.value = e.constraint_values[i];
     m.margin = c.is_upper ? c.limit - m.value : m.value - c.limit;
     m.relative_margin = m.margin / c.limit;
-    m.holds = m.relative_margin >= -study_.optimiser.constraint_tolerance;
+    m.holds = m.relative_margin >= -study_.optimiser.constraint_tolerance;  // within tolerance
     out.push_back(m);
   }
   return out;

@@ -43,8 +43,12 @@ class TuningProblem {
   explicit TuningProblem(TuningStudy study, EvaluationJournal* journal = nullptr);
 
   const TuningStudy& study() const { return study_; }
+  // Evaluations from now on are looked up in and appended to `journal` (may be null).
+  void attach_journal(EvaluationJournal* journal) { journal_ = journal; }
 
-  // Thread-safe. A design already evaluated (in this run or in the journal) is not recomputed.
+  // Thread-safe (two concurrent calls for one new design may both compute it). A design
+  // already evaluated, in this run or in the journal, is not recomputed. An InputError or
+  // RunError of a case names the study, the case and the design.
   Evaluation evaluate(FrictionVariant variant, Accuracy accuracy, std::span<const double> x);
 
   // Constraint i's normalised value, ≤ 0 when it holds: (value − limit)/limit for a max,

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <set>
 
+#include "ridefit/comfort/weighting_filter.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/value_range.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/optimisation/tuning_model.h"
+#include "ridefit/road/excitation_file.h"
 #include "ridefit/study/half_car_metrics.h"
 #include "ridefit/study/quarter_car_metrics.h"
 
@@ -135,7 +137,14 @@ void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningS
       }
     }
     study.fitted_model = friction.file("fitted_model");
-    const auto fitted = io::load_quarter_car(study.fitted_model);
+    io::QuarterCarFile fitted;
+    try {
+      fitted = io::load_quarter_car(study.fitted_model);
+    } catch (const InputError& e) {
+      throw InputError(
+          fmt::format("{}: a fitted quarter-car model is needed (as `ridefit fit` writes it): {}",
+                      friction.locate("fitted_model"), e.what()));
+    }
     values = {{"dahl_sigma0_N_per_m", fitted.parameters.dahl_sigma0_N_per_m},
               {"coulomb_force_N", fitted.parameters.coulomb_force_N},
               {"dahl_exponent", fitted.parameters.dahl_exponent}};
@@ -211,7 +220,13 @@ void read_optimiser(const io::YamlMap& map, OptimiserSettings& o) {
   if (map.has("max_time_s")) o.max_time_s = map.non_negative_up_to("max_time_s", 1e7);
   if (map.has("initial_step")) o.initial_step = map.positive_up_to("initial_step", 1.0);
   if (map.has("constraint_tolerance"))
-    o.constraint_tolerance = map.non_negative_up_to("constraint_tolerance", 0.5);
+    o.constraint_tolerance = map.non_negative_up_to("constraint_tolerance", 0.01);
+  if (o.algorithm == Algorithm::kDirectL && o.starts > 1) {
+    throw InputError(
+        fmt::format("{}: DIRECT-L does not use a start point, so more starts only "
+                    "repeat it; give starts: 1",
+                    map.locate("starts")));
+  }
   map.finish();
 }
 
@@ -246,6 +261,43 @@ void read_evaluation(const io::YamlMap& map, EvaluationSettings& e) {
     e.threads = static_cast<unsigned>(n);
   }
   map.finish();
+}
+
+// The time settings against each case's road: the run must fit in the road, leave something
+// after the settling time, and sample fast enough for the weightings.
+void check_record_lengths(const io::YamlMap& file, const TuningStudy& study) {
+  const auto& e = study.evaluation;
+  for (const auto weighting : {comfort::Weighting::kWk, comfort::Weighting::kWe}) {
+    if (e.output_rate_Hz < comfort::minimum_sample_rate_Hz(weighting)) {
+      throw InputError(fmt::format(
+          "{}: evaluation.output_rate_Hz is {:g} Hz; the ISO 2631-1 weightings need at least {:g} "
+          "Hz",
+          study.study_file.string(), e.output_rate_Hz, comfort::minimum_sample_rate_Hz(weighting)));
+    }
+  }
+  for (const auto& c : study.load_cases) {
+    std::unique_ptr<road::RoadInput> road;
+    try {
+      road = c.speed_m_per_s ? road::load_excitation(c.road_file, *c.speed_m_per_s)
+                             : road::load_excitation(c.road_file);
+    } catch (const InputError& error) {
+      throw InputError(
+          fmt::format("{}: load case '{}': {}", file.locate("load_cases"), c.name, error.what()));
+    }
+    const double length = road->duration_s();
+    if (e.duration_s > length) {
+      throw InputError(fmt::format(
+          "{}: evaluation.duration_s is {:g} s, longer than load case '{}''s road ({:g} s)",
+          study.study_file.string(), e.duration_s, c.name, length));
+    }
+    const double used = e.duration_s > 0.0 ? e.duration_s : length;
+    if (e.settle_s >= used - 1.0) {
+      throw InputError(fmt::format(
+          "{}: evaluation.settle_s is {:g} s, which leaves less than 1 s of load case '{}' ({:g} "
+          "s) to evaluate",
+          study.study_file.string(), e.settle_s, c.name, used));
+    }
+  }
 }
 
 }  // namespace
@@ -296,7 +348,13 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
   TuningStudy study;
   study.study_file = study_file;
   study.model_file = file.file("model");
-  const std::string kind = io::model_kind(study.model_file);
+  std::string kind;
+  try {
+    kind = io::model_kind(study.model_file);
+  } catch (const InputError& e) {
+    throw InputError(
+        fmt::format("{}: not a vehicle model file ({})", file.locate("model"), e.what()));
+  }
   study.kind = kind == "half_car" ? ModelKind::kHalfCar : ModelKind::kQuarterCar;
 
   if (file.has("set")) {
@@ -336,7 +394,11 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
                                  file.locate("load_cases")));
   }
   const YAML::Node cases = YAML::LoadFile(study_file.string())["load_cases"];
-  if (!cases.IsSequence() || cases.size() == 0) {
+  if (!cases.IsSequence()) {
+    throw InputError(fmt::format("{} is not a list; write each case as `- {{name: …, road: …}}`",
+                                 file.locate("load_cases")));
+  }
+  if (cases.size() == 0) {
     throw InputError(
         fmt::format("{} is empty; give at least one case, e.g. - {{road: ../excitations/x.yaml}}",
                     file.locate("load_cases")));
@@ -352,6 +414,29 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
     if (!case_names.insert(study.load_cases.back().name).second) {
       throw InputError(fmt::format("{}: the case name '{}' is used twice",
                                    case_maps[i].locate("name"), study.load_cases.back().name));
+    }
+  }
+
+  // A key set by a design variable cannot also be fixed by a case or by the friction level.
+  for (const auto& v : study.design) {
+    for (const auto& key : v.keys) {
+      for (const auto& c : study.load_cases) {
+        for (const auto& [k, value] : c.model_values) {
+          if (k == key) {
+            throw InputError(fmt::format(
+                "{}: load case '{}' sets '{}', which the design variable '{}' varies; remove one",
+                file.locate("load_cases"), c.name, key, v.name));
+          }
+        }
+      }
+      for (const auto& [k, value] : study.friction_values) {
+        if (k == key || k.ends_with("." + key) || key.ends_with("." + k)) {
+          throw InputError(
+              fmt::format("{}: '{}' is set by friction and varied by the design variable '{}'; "
+                          "remove one",
+                          file.locate("friction"), k, v.name));
+        }
+      }
     }
   }
 
@@ -426,6 +511,8 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
         build_tuning_model(study, FrictionVariant::kStudy, study.load_cases[c], start, origin);
     if (c == 0) study.model_has_friction = has_friction(model);
   }
+  // Both ends of every variable, and every corner of the design box (up to 10 variables):
+  // rules between keys (min_damping <= max_damping) fail at a corner if anywhere.
   for (std::size_t v = 0; v < study.design.size(); ++v) {
     for (double value : {study.design[v].lower, study.design[v].upper}) {
       std::vector<double> x = start;
@@ -435,6 +522,23 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
                                      study.design[v].name, value));
     }
   }
+  const std::size_t n = study.design.size();
+  if (n >= 2 && n <= 10) {
+    for (std::size_t corner = 0; corner < (std::size_t{1} << n); ++corner) {
+      std::vector<double> x(n);
+      std::string where;
+      for (std::size_t v = 0; v < n; ++v) {
+        x[v] = (corner >> v) & 1 ? study.design[v].upper : study.design[v].lower;
+        where += fmt::format(" {}={:g}", study.design[v].name, x[v]);
+      }
+      build_tuning_model(
+          study, FrictionVariant::kStudy, study.load_cases.front(), x,
+          fmt::format("{}: design corner{} (every combination within the bounds must be a valid "
+                      "model; narrow the bounds)",
+                      study_file.string(), where));
+    }
+  }
+  check_record_lengths(file, study);
   if (file.has("friction_cost")) {
     const std::string s = file.choice("friction_cost", {"true", "false"});
     study.friction_cost = s == "true";

@@ -45,7 +45,8 @@ namespace ridefit::optimisation {
 //     max_evaluations: 200     # per start
 //     max_time_s: 0            # per start; 0 = no limit (a time limit is not reproducible)
 //     initial_step: 0.1        # first step as a share of each range (cobyla, bobyqa)
-//     constraint_tolerance: 1.0e-3   # a limit counts as held within this share of it
+//     constraint_tolerance: 1.0e-3   # the search aims this share inside each limit, and a
+//                                    # limit broken by less than it counts as held (≤ 0.01)
 //   evaluation:                # optional
 //     method: auto             # auto | frequency | time (auto: frequency when exact)
 //     output_rate_Hz: 1000     # time domain: output rate, settle time left out, duration
