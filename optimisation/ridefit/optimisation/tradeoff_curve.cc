@@ -40,6 +40,28 @@ std::vector<TradeoffPoint> tradeoff_curve(TuningProblem& problem, const std::vec
     if (p.run.feasible) from = p.run.best.x;
     points.push_back(std::move(p));
   }
+  // Tightest first. A design that holds a tighter limit holds every looser one, so where the
+  // search for a looser limit stopped at a worse design (its tolerance), the tighter one is
+  // that limit's optimum too: the front is then monotone, as it must be.
+  std::sort(points.begin(), points.end(), [upper](const TradeoffPoint& a, const TradeoffPoint& b) {
+    return upper ? a.limit < b.limit : a.limit > b.limit;
+  });
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const TradeoffPoint& tighter = points[i - 1];
+    TradeoffPoint& looser = points[i];
+    if (tighter.run.feasible &&
+        (!looser.run.feasible || tighter.run.verified.objective < looser.run.verified.objective)) {
+      std::vector<double> all = problem.study_limits();
+      all[swept] = looser.limit;
+      const double limit = looser.limit;
+      looser.run = tighter.run;
+      looser.limit = limit;
+      looser.run.limits = all;
+      looser.run.margins = problem.margins(looser.run.verified, all);
+      looser.run.feasible = problem.feasible(looser.run.verified, all);
+      looser.achieved = tighter.achieved;
+    }
+  }
   std::sort(points.begin(), points.end(),
             [](const TradeoffPoint& a, const TradeoffPoint& b) { return a.limit < b.limit; });
   return points;

@@ -16,8 +16,10 @@ struct TradeoffPoint {
 
 // ε-constraint sweep: the study optimised once per limit of `study.tradeoff`, from the loosest
 // limit to the tightest, each run starting from the previous feasible optimum (`start` for the
-// first), so that the front is traced continuously. Returned in increasing limit. Infeasible
-// points are kept and marked (run.feasible), never drawn as part of the front.
+// first), so that the front is traced continuously; where a tighter limit's optimum rides
+// better than a looser one's (the search tolerance), it is taken for the looser limit too, so
+// the front is monotone. Returned in increasing limit. Infeasible points are kept and marked
+// (run.feasible), never drawn as part of the front.
 std::vector<TradeoffPoint> tradeoff_curve(TuningProblem& problem, const std::vector<double>& start,
                                           const ProgressSink& progress = {});
 
