@@ -64,7 +64,9 @@ model::StrutTestParameters<double> start_from(const io::QuarterCarFile& file,
                                        q.damping_Ns_per_m,
                                        0.0,
                                        0.0,
-                                       0.0};
+                                       0.0,
+                                       q.static_friction_force_N,
+                                       q.stribeck_velocity_m_per_s};
   for (const auto& [name, value] : parse_overrides(starts)) {
     try {
       fitting::strut_parameter(p, fitting::strut_parameter_index(name)) = value;
