@@ -73,10 +73,12 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
   // 2. Bump stop: stiffness and clearance together, the exponent optional (default 2).
   if (file.has("bump_stop_stiffness_N_per_m") || file.has("bump_stop_clearance_m") ||
       file.has("bump_stop_exponent")) {
-    require_with(file, "bump_stop_clearance_m", "bump_stop_stiffness_N_per_m",
-                 "the stop's secant stiffness");
-    require_with(file, "bump_stop_stiffness_N_per_m", "bump_stop_clearance_m",
-                 "the compression at first contact");
+    const std::string given = file.has("bump_stop_stiffness_N_per_m")
+                                  ? "bump_stop_stiffness_N_per_m"
+                              : file.has("bump_stop_clearance_m") ? "bump_stop_clearance_m"
+                                                                  : "bump_stop_exponent";
+    require_with(file, given, "bump_stop_stiffness_N_per_m", "the stop's secant stiffness");
+    require_with(file, given, "bump_stop_clearance_m", "the compression at first contact");
     p.bump_stop_stiffness_N_per_m =
         file.positive_up_to("bump_stop_stiffness_N_per_m", kMaxStiffness_N_per_m);
     p.bump_stop_clearance_m = file.positive_up_to("bump_stop_clearance_m", kMaxLength_m);
@@ -109,7 +111,9 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
           p.damping_Ns_per_m));
     }
   }
-  // 5. Stribeck level of the Dahl element: v_s > 0 switches it on, Fs ≥ Fc (default Fc).
+  // 5. Stribeck level of the Dahl element: v_s > 0 switches it on, Fs ≥ Fc (default Fc). Fs = Fc
+  // also while it is off, so a fit that frees only v_s starts from a flat curve, not from Fs = 0.
+  p.static_friction_force_N = p.coulomb_force_N;
   if (file.has("stribeck_velocity_m_per_s") || file.has("static_friction_force_N")) {
     require_with(file, "static_friction_force_N", "stribeck_velocity_m_per_s",
                  "the sliding velocity over which Fs falls to coulomb_force_N");
@@ -119,7 +123,6 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
       throw InputError(fmt::format("{} needs Dahl friction: coulomb_force_N > 0 (it is {})",
                                    file.locate("stribeck_velocity_m_per_s"), p.coulomb_force_N));
     }
-    p.static_friction_force_N = p.coulomb_force_N;
     if (file.has("static_friction_force_N")) {
       p.static_friction_force_N = number_from(
           file, "static_friction_force_N", p.coulomb_force_N, kMaxCoulombForce_N,
