@@ -64,7 +64,9 @@ model::StrutTestParameters<double> start_from(const io::QuarterCarFile& file,
                                        q.damping_Ns_per_m,
                                        0.0,
                                        0.0,
-                                       0.0};
+                                       0.0,
+                                       q.static_friction_force_N,
+                                       q.stribeck_velocity_m_per_s};
   for (const auto& [name, value] : parse_overrides(starts)) {
     try {
       fitting::strut_parameter(p, fitting::strut_parameter_index(name)) = value;
@@ -397,7 +399,9 @@ void register_fit(CLI::App& app) {
   command->add_option("--bounds", flags->bounds, "NAME=LOWER:UPPER (repeatable)");
   command->add_option("--start", flags->starts,
                       "NAME=VALUE start for a parameter not in the model file (gas_force_N, "
-                      "gas_stiffness_N_per_m, force_offset_N) or to override one");
+                      "gas_stiffness_N_per_m, force_offset_N; stribeck_velocity_m_per_s and "
+                      "static_friction_force_N when the file has no Stribeck curve) or to "
+                      "override one");
   command->add_option("--loss", flags->loss, "Robust loss: none, huber, cauchy")
       ->check(CLI::IsMember({"none", "huber", "cauchy"}))
       ->capture_default_str();

@@ -18,7 +18,10 @@ struct StrutParameterInfo {
   bool in_model_file;  // a quarter-car model key (the rig-only ones are not)
 };
 
-inline constexpr std::array<StrutParameterInfo, 8> kStrutParameters{{
+// The Stribeck pair acts only when stribeck_velocity_m_per_s > 0 (its default 0 is off and below
+// its bound, so fitting it needs a --start or a model file that has it); static_friction_force_N
+// is read only then.
+inline constexpr std::array<StrutParameterInfo, 10> kStrutParameters{{
     {"dahl_sigma0_N_per_m", 1e3, 1e10, true},
     {"coulomb_force_N", 0.0, 1e4, true},
     {"dahl_exponent", 0.2, 5.0, true},
@@ -27,6 +30,8 @@ inline constexpr std::array<StrutParameterInfo, 8> kStrutParameters{{
     {"gas_force_N", -1e4, 1e4, false},
     {"gas_stiffness_N_per_m", -1e6, 1e6, false},
     {"force_offset_N", -1e4, 1e4, false},
+    {"static_friction_force_N", 0.0, 1e4, true},
+    {"stribeck_velocity_m_per_s", 1e-5, 10.0, true},
 }};
 
 // Index into kStrutParameters; InputError naming the accepted names for an unknown one.
@@ -50,8 +55,12 @@ T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
       return p.gas_force_N;
     case 6:
       return p.gas_stiffness_N_per_m;
-    default:
+    case 7:
       return p.force_offset_N;
+    case 8:
+      return p.static_friction_force_N;
+    default:
+      return p.stribeck_velocity_m_per_s;
   }
 }
 

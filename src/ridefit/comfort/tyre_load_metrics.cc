@@ -12,7 +12,7 @@
 namespace ridefit::comfort {
 
 double static_tyre_load_N(const model::QuarterCarParameters<double>& parameters) {
-  return (parameters.sprung_mass_kg + parameters.unsprung_mass_kg) * kStandardGravity_m_per_s2;
+  return parameters.static_tyre_load_N();
 }
 
 TyreLoadMetrics tyre_load_metrics(std::span<const double> dynamic_tyre_force_N,

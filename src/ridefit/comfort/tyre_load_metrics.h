@@ -3,11 +3,12 @@
 #include <span>
 
 #include "ridefit/model/quarter_car.h"
+#include "ridefit/model/standard_gravity.h"
 
 namespace ridefit::comfort {
 
-// Standard gravity (ISO 80000-3) [m/s²].
-inline constexpr double kStandardGravity_m_per_s2 = 9.80665;
+// Standard gravity (ISO 80000-3) [m/s²], the model layer's value.
+inline constexpr double kStandardGravity_m_per_s2 = model::kStandardGravity_m_per_s2;
 
 // The static tyre load of a quarter car, (m_s + m_u)·g [N]: the tyre carries both masses.
 double static_tyre_load_N(const model::QuarterCarParameters<double>& parameters);
@@ -20,8 +21,10 @@ struct TyreLoadMetrics {
   // the wheel load varies by 30 % of the static load, RMS).
   double relative_dynamic_load = 0.0;
   // Share of the samples in [0, 1] in which the total load static + dynamic is ≤ 0: the tyre
-  // lifts off. The quarter car's Kelvin-Voigt tyre has no lift-off (it pulls the wheel down
-  // with negative load), so a share above 0 marks a run outside the model's validity.
+  // lifts off. The quarter car's Kelvin-Voigt tyre has no lift-off by default (it pulls the wheel
+  // down with negative load), so a share above 0 marks a run outside the model's validity; with
+  // the model key tyre_lift_off the force is clipped at −static load and the share counts the
+  // samples in flight.
   double lift_off_share = 0.0;
   double min_total_load_N = 0.0;  // smallest static + dynamic load
 };

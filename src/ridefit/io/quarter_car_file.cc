@@ -27,6 +27,110 @@ constexpr double kMaxCoulombForce_N = 1e5;
 // by it), at most 10 (beyond any real valving; catches a typed percentage).
 constexpr double kMaxCompressionToReboundRatio = 10.0;
 
+// Plausibility of the optional effects' lengths and speeds: deflections and clearances up to 1 m
+// (a typed millimetre value is caught), velocities up to 10 m/s.
+constexpr double kMaxLength_m = 1.0;
+constexpr double kMaxVelocity_m_per_s = 10.0;
+constexpr double kMaxBumpStopExponent = 10.0;
+
+// `key` is only meaningful together with `needed`: name both when `needed` is missing.
+void require_with(const YamlMap& file, const std::string& key, const std::string& needed,
+                  const std::string& why) {
+  if (!file.has(needed)) {
+    throw InputError(
+        fmt::format("{} needs the key '{}' as well ({})", file.locate(key), needed, why));
+  }
+}
+
+// A number in [lo, hi] where lo is another key's value: the message says which and why.
+double number_from(const YamlMap& file, const std::string& key, double lo, double hi,
+                   const std::string& rule) {
+  const double v = file.number(key);
+  if (v < lo || v > hi) {
+    throw InputError(fmt::format("{} is {}, expected a value in [{}, {:g}] ({})", file.locate(key),
+                                 v, lo, hi, rule));
+  }
+  return v;
+}
+
+// The optional physical effects, each off when its keys are absent (quarter_car_file.h).
+void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<double>& p) {
+  // 1. Top mount stiffer at small amplitude: k_s ≥ k_l and δ0 > 0, both or neither.
+  const bool stiffening = file.has("top_mount_small_amplitude_stiffness_N_per_m") ||
+                          file.has("top_mount_transition_deflection_m");
+  if (stiffening) {
+    require_with(file, "top_mount_small_amplitude_stiffness_N_per_m",
+                 "top_mount_transition_deflection_m", "the deflection where the stiffening fades");
+    require_with(file, "top_mount_transition_deflection_m",
+                 "top_mount_small_amplitude_stiffness_N_per_m", "the stiffness at zero deflection");
+    p.top_mount_small_amplitude_stiffness_N_per_m =
+        number_from(file, "top_mount_small_amplitude_stiffness_N_per_m",
+                    p.top_mount_stiffness_N_per_m, kMaxStiffness_N_per_m,
+                    "at least top_mount_stiffness_N_per_m, the large-amplitude stiffness");
+    p.top_mount_transition_deflection_m =
+        file.positive_up_to("top_mount_transition_deflection_m", kMaxLength_m);
+  }
+  // 2. Bump stop: stiffness and clearance together, the exponent optional (default 2).
+  if (file.has("bump_stop_stiffness_N_per_m") || file.has("bump_stop_clearance_m") ||
+      file.has("bump_stop_exponent")) {
+    const std::string given = file.has("bump_stop_stiffness_N_per_m")
+                                  ? "bump_stop_stiffness_N_per_m"
+                              : file.has("bump_stop_clearance_m") ? "bump_stop_clearance_m"
+                                                                  : "bump_stop_exponent";
+    require_with(file, given, "bump_stop_stiffness_N_per_m", "the stop's secant stiffness");
+    require_with(file, given, "bump_stop_clearance_m", "the compression at first contact");
+    p.bump_stop_stiffness_N_per_m =
+        file.positive_up_to("bump_stop_stiffness_N_per_m", kMaxStiffness_N_per_m);
+    p.bump_stop_clearance_m = file.positive_up_to("bump_stop_clearance_m", kMaxLength_m);
+    p.bump_stop_exponent = 2.0;
+    if (file.has("bump_stop_exponent")) {
+      p.bump_stop_exponent = file.number_in("bump_stop_exponent", 1.0, kMaxBumpStopExponent);
+    }
+  }
+  // 3. Tyre lift-off: true | false, or 1 | 0 (what --set tyre_lift_off=1 writes).
+  if (file.has("tyre_lift_off")) {
+    const std::string text = file.choice("tyre_lift_off", {"true", "false", "1", "0"});
+    p.tyre_lift_off = text == "true" || text == "1";
+  }
+  // 4. Damper blow-off knee: v_k > 0 and 0 < c_h ≤ c_r, both or neither.
+  if (file.has("damper_knee_velocity_m_per_s") || file.has("damping_above_knee_Ns_per_m")) {
+    require_with(file, "damper_knee_velocity_m_per_s", "damping_above_knee_Ns_per_m",
+                 "the slope above the knee");
+    require_with(file, "damping_above_knee_Ns_per_m", "damper_knee_velocity_m_per_s",
+                 "where the slope changes");
+    p.damper_knee_velocity_m_per_s =
+        file.positive_up_to("damper_knee_velocity_m_per_s", kMaxVelocity_m_per_s);
+    // Digressive only: a slope above the knee greater than c_r would be a progressive damper.
+    p.damping_above_knee_Ns_per_m = file.number("damping_above_knee_Ns_per_m");
+    if (!(p.damping_above_knee_Ns_per_m > 0.0) ||
+        p.damping_above_knee_Ns_per_m > p.damping_Ns_per_m) {
+      throw InputError(fmt::format(
+          "{} is {}, expected a value > 0 and <= {} (at most damping_Ns_per_m: the knee is "
+          "digressive)",
+          file.locate("damping_above_knee_Ns_per_m"), p.damping_above_knee_Ns_per_m,
+          p.damping_Ns_per_m));
+    }
+  }
+  // 5. Stribeck level of the Dahl element: v_s > 0 switches it on, Fs ≥ Fc (default Fc). Fs = Fc
+  // also while it is off, so a fit that frees only v_s starts from a flat curve, not from Fs = 0.
+  p.static_friction_force_N = p.coulomb_force_N;
+  if (file.has("stribeck_velocity_m_per_s") || file.has("static_friction_force_N")) {
+    require_with(file, "static_friction_force_N", "stribeck_velocity_m_per_s",
+                 "the sliding velocity over which Fs falls to coulomb_force_N");
+    p.stribeck_velocity_m_per_s =
+        file.positive_up_to("stribeck_velocity_m_per_s", kMaxVelocity_m_per_s);
+    if (!(p.coulomb_force_N > 0.0)) {
+      throw InputError(fmt::format("{} needs Dahl friction: coulomb_force_N > 0 (it is {})",
+                                   file.locate("stribeck_velocity_m_per_s"), p.coulomb_force_N));
+    }
+    if (file.has("static_friction_force_N")) {
+      p.static_friction_force_N = number_from(
+          file, "static_friction_force_N", p.coulomb_force_N, kMaxCoulombForce_N,
+          "at least coulomb_force_N: friction breaks away at or above its sliding level");
+    }
+  }
+}
+
 QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_state) {
   file.choice("model", {"quarter_car"});
   QuarterCarFile result{};
@@ -66,6 +170,7 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
     p.coulomb_force_N = 0.0;
     p.dahl_exponent = 1.0;
   }
+  read_optional_effects(file, p);
   file.finish();
   return result;
 }

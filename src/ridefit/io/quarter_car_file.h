@@ -26,6 +26,30 @@ namespace ridefit::io {
 //   coulomb_force_N: 60
 //   dahl_exponent: 1
 //
+// Optional physical effects, each off when its keys are absent (results then bit for bit as
+// without them); the laws are in the model headers named:
+//
+//   # Top mount (damper path) stiffer at small amplitude, amplitude_stiffening_spring.h:
+//   #   F = k_l·δ + (k_s − k_l)·δ0·tanh(δ/δ0), k_l = top_mount_stiffness_N_per_m. Both keys.
+//   top_mount_small_amplitude_stiffness_N_per_m: 707000   # k_s, >= k_l
+//   top_mount_transition_deflection_m: 0.0002              # δ0, in (0, 1]
+//   # Bump stop beyond a compression clearance c0, bump_stop.h: with compression c = −travel,
+//   #   F = k_bs·c0·((c − c0)/c0)^n for c > c0 (k_bs in N/m for every n). Stiffness and clearance.
+//   bump_stop_stiffness_N_per_m: 200000    # k_bs, in (0, 1e10]
+//   bump_stop_clearance_m: 0.03            # c0, in (0, 1]
+//   bump_stop_exponent: 2                  # n, in [1, 10], default 2
+//   # Unilateral tyre, tyre_lift_off.h: dynamic tyre force max(F, −(ms + mu)·g).
+//   tyre_lift_off: true                    # true | false | 1 | 0, default false
+//   # Damper blow-off knee, asymmetric_damper.h: slope c_h above |v| = v_k (times the
+//   # compression ratio in compression). Both keys.
+//   damper_knee_velocity_m_per_s: 0.1      # v_k, in (0, 10]
+//   damping_above_knee_Ns_per_m: 300       # c_h, in (0, damping_Ns_per_m]
+//   # Stribeck level of the Dahl element, stribeck_curve.h (needs coulomb_force_N > 0):
+//   #   Fc(v) = Fc + (Fs − Fc)·exp(−(v/v_s)²).
+//   stribeck_velocity_m_per_s: 0.01        # v_s, in (0, 10]; switches it on
+//   static_friction_force_N: 90            # Fs, in [coulomb_force_N, 1e5], default Fc
+//
+// Every numeric key can be given by `--set key=value` (tyre_lift_off=1 or 0 included).
 // Unknown keys, missing keys, non-numbers and out-of-range values are InputErrors naming
 // the file and the key.
 struct QuarterCarFile {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ridefit/model/scalar_math.h"
+#include "ridefit/model/stribeck_curve.h"
 
 namespace ridefit::model {
 
@@ -18,17 +19,33 @@ namespace ridefit::model {
 // Newton iterations and Ceres tolerate; exact zeros of v are rare in floating point).
 //
 // Fc = 0 means no friction: the force stays at zero (the formula would divide by zero).
+//
+// Optional velocity dependence (Stribeck, stribeck_curve.h): with stribeck_velocity_m_per_s
+// v_s > 0, Fc in the law above becomes the level Fc(v) = Fc + (Fs − Fc)·exp(−(v/v_s)²) at the
+// same sliding velocity v, so gross sliding settles at F = Fc(v)·sgn v: the breakaway force
+// Fs near rest, Fc at speed. Fc(v) ≥ Fc > 0 keeps the division safe; the right-hand side stays
+// continuous at v = 0 (still multiplied by v). v_s = 0 (the default) is the classic law, bit for
+// bit. The element is active only with Fc > 0.
 template <typename T>
 struct DahlFriction {
   T sigma0_N_per_m;
   T coulomb_force_N;
   T exponent;
+  T static_friction_force_N{0.0};    // Fs, read only when v_s > 0
+  T stribeck_velocity_m_per_s{0.0};  // v_s; 0 = no velocity dependence
 
   bool active() const { return coulomb_force_N > 0.0; }
 
+  // The sliding level Fc(v) [N] (Fc without the Stribeck keys).
+  T level_N(const T& velocity_m_per_s) const {
+    return stribeck_level_N(coulomb_force_N, static_friction_force_N, stribeck_velocity_m_per_s,
+                            velocity_m_per_s);
+  }
+
   T force_rate_N_per_s(const T& force_N, const T& velocity_m_per_s) const {
     if (!active()) return T(0.0);
-    const T s = T(1.0) - force_N / coulomb_force_N * sign_positive_at_zero(velocity_m_per_s);
+    const T s =
+        T(1.0) - force_N / level_N(velocity_m_per_s) * sign_positive_at_zero(velocity_m_per_s);
     return sigma0_N_per_m * velocity_m_per_s * signed_power(s, exponent);
   }
 };

@@ -1,5 +1,7 @@
 #include "ridefit/model/quarter_car.h"
 
+#include <fmt/core.h>
+
 #include <cmath>
 
 namespace ridefit::model {
@@ -7,16 +9,28 @@ namespace ridefit::model {
 QuarterCar::QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters)
     : state_(state), parameters_(parameters) {}
 
-bool QuarterCar::is_linear() const {
-  switch (state_) {
-    case DamperState::kStick:
-      return true;
-    case DamperState::kSlip:
-      return parameters_.damper_path().damper.symmetric();
-    case DamperState::kStickSlip:
-      return false;
+std::string QuarterCar::nonlinearity() const {
+  const auto& p = parameters_;
+  std::string reasons;
+  const auto add = [&](const std::string& reason) {
+    reasons += (reasons.empty() ? "" : ", ") + reason;
+  };
+  if (state_ == DamperState::kStickSlip) add("the Dahl friction of stick_slip");
+  const auto path = p.damper_path();
+  // The locked damper of stick never moves: its split and knee do not act.
+  if (state_ != DamperState::kStick) {
+    if (!path.damper.symmetric()) {
+      add(fmt::format("the damper's compression_to_rebound_ratio {}",
+                      p.compression_to_rebound_ratio));
+    }
+    if (path.damper.has_knee() && p.damping_above_knee_Ns_per_m != p.damping_Ns_per_m) {
+      add(fmt::format("the damper's knee at {} m/s", p.damper_knee_velocity_m_per_s));
+    }
   }
-  return false;
+  if (!path.top_mount.linear()) add("the top mount's amplitude stiffening");
+  if (p.bump_stop().active()) add("the bump stop");
+  if (p.tyre_lift_off) add("tyre lift-off");
+  return reasons;
 }
 
 std::array<const char*, QuarterCar::kMaxStates> QuarterCar::state_names() const {
@@ -35,6 +49,8 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
   out.travel_m = x[0] - x[1];
   out.tyre_force_N = p.tyre_stiffness_N_per_m * (road.elevation_m - x[1]) +
                      p.tyre_damping_Ns_per_m * (road.rate_m_per_s - x[3]);
+  if (p.tyre_lift_off)
+    out.tyre_force_N = lifted_off_tyre_force_N(out.tyre_force_N, p.static_tyre_load_N());
   const double damper_deflection = state_ == DamperState::kStick ? 0.0 : x[4];
   out.top_mount_deflection_m = out.travel_m - damper_deflection;
   out.damper_force_N =
@@ -46,11 +62,13 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
     case DamperState::kStick:
       out.stuck = 1.0;
       // The locked damper carries the whole damper-path force.
-      out.friction_force_N = p.top_mount_stiffness_N_per_m * out.top_mount_deflection_m;
+      out.friction_force_N = p.damper_path().top_mount.force_N(out.top_mount_deflection_m);
       break;
     case DamperState::kStickSlip:
       out.friction_force_N = x[5];
-      out.stuck = (p.coulomb_force_N > 0.0 && std::abs(x[5]) < kStuckForceShare * p.coulomb_force_N)
+      // With a Stribeck curve the share is of the level at the damper's rate, Fc(z_c').
+      out.stuck = (p.coulomb_force_N > 0.0 &&
+                   std::abs(x[5]) < kStuckForceShare * p.damper_path().friction.level_N(xdot[4]))
                       ? 1.0
                       : 0.0;
       break;

@@ -3,9 +3,12 @@
 #include <array>
 #include <string>
 
+#include "ridefit/model/bump_stop.h"
 #include "ridefit/model/kelvin_voigt.h"
 #include "ridefit/model/linear_spring.h"
+#include "ridefit/model/standard_gravity.h"
 #include "ridefit/model/strut_damper_path.h"
+#include "ridefit/model/tyre_lift_off.h"
 #include "ridefit/road/road_input.h"
 
 namespace ridefit::model {
@@ -28,6 +31,22 @@ struct QuarterCarParameters {
   // Compression coefficient over rebound coefficient, c_c = r·c_r (AsymmetricDamper). Last,
   // with its default, so a file or initialiser without it keeps the symmetric damper.
   T compression_to_rebound_ratio{1.0};
+  // Optional physical effects, each off at its default (the keys are absent; quarter_car_file.h).
+  // Top mount (damper path) stiffer at small amplitude, amplitude_stiffening_spring.h; δ0 = 0 off.
+  T top_mount_small_amplitude_stiffness_N_per_m{0.0};
+  T top_mount_transition_deflection_m{0.0};
+  // Progressive bump stop, bump_stop.h; k_bs = 0 off.
+  T bump_stop_stiffness_N_per_m{0.0};
+  T bump_stop_clearance_m{0.0};
+  T bump_stop_exponent{2.0};
+  // Unilateral tyre contact, tyre_lift_off.h.
+  bool tyre_lift_off = false;
+  // Damper blow-off knee, asymmetric_damper.h; v_k = 0 off.
+  T damper_knee_velocity_m_per_s{0.0};
+  T damping_above_knee_Ns_per_m{0.0};
+  // Stribeck level of the Dahl element, stribeck_curve.h; v_s = 0 off.
+  T static_friction_force_N{0.0};
+  T stribeck_velocity_m_per_s{0.0};
 
   template <typename U>
   QuarterCarParameters<U> cast() const {
@@ -42,7 +61,17 @@ struct QuarterCarParameters {
             U(dahl_sigma0_N_per_m),
             U(coulomb_force_N),
             U(dahl_exponent),
-            U(compression_to_rebound_ratio)};
+            U(compression_to_rebound_ratio),
+            U(top_mount_small_amplitude_stiffness_N_per_m),
+            U(top_mount_transition_deflection_m),
+            U(bump_stop_stiffness_N_per_m),
+            U(bump_stop_clearance_m),
+            U(bump_stop_exponent),
+            tyre_lift_off,
+            U(damper_knee_velocity_m_per_s),
+            U(damping_above_knee_Ns_per_m),
+            U(static_friction_force_N),
+            U(stribeck_velocity_m_per_s)};
   }
 
   // Coil spring in series with the top mount's spring path.
@@ -50,9 +79,19 @@ struct QuarterCarParameters {
     return series_stiffness(spring_stiffness_N_per_m, top_mount_spring_path_stiffness_N_per_m);
   }
   StrutDamperPath<T> damper_path() const {
-    return {{top_mount_stiffness_N_per_m},
-            {damping_Ns_per_m, compression_to_rebound_ratio},
-            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
+    return {{top_mount_stiffness_N_per_m, top_mount_small_amplitude_stiffness_N_per_m,
+             top_mount_transition_deflection_m},
+            {damping_Ns_per_m, compression_to_rebound_ratio, damper_knee_velocity_m_per_s,
+             damping_above_knee_Ns_per_m},
+            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent, static_friction_force_N,
+             stribeck_velocity_m_per_s}};
+  }
+  BumpStop<T> bump_stop() const {
+    return {bump_stop_stiffness_N_per_m, bump_stop_clearance_m, bump_stop_exponent};
+  }
+  // The tyre carries both masses: (ms + mu)·g [N].
+  T static_tyre_load_N() const {
+    return (sprung_mass_kg + unsprung_mass_kg) * kStandardGravity_m_per_s2;
   }
 };
 
@@ -62,7 +101,8 @@ struct QuarterCarOutputs {
   double body_acc_m_per_s2 = 0;
   double wheel_acc_m_per_s2 = 0;
   double travel_m = 0;                // zs − zu, extension positive
-  double tyre_force_N = 0;            // dynamic tyre load, compression positive
+  double tyre_force_N = 0;            // dynamic tyre load, compression positive (clipped at
+                                      // −(ms + mu)·g with tyre_lift_off)
   double damper_force_N = 0;          // hydraulic damper force c(z_c')·z_c' (AsymmetricDamper)
   double friction_force_N = 0;        // Dahl friction F_f
   double top_mount_deflection_m = 0;  // damper path top mount, z − z_c
@@ -87,6 +127,14 @@ struct QuarterCarOutputs {
 // compression_to_rebound_ratio times it in compression; with a ratio other than 1 the slip
 // model is no longer linear (is_linear()).
 //
+// Optional effects (each off by default; the keys in quarter_car_file.h):
+//   - the damper-path top mount stiffer at small amplitude (F_path nonlinear in z − z_c);
+//   - a bump stop F_bs(−z) in parallel with the spring path, pushing body and wheel apart:
+//       ms·zs'' = −k_sp·z − F_path + F_bs,   mu·zu'' = k_sp·z + F_path − F_bs − F_tyre,t;
+//   - tyre lift-off: the tyre's tension force kt·(zu − h) + ct·(zu' − h') is capped at the
+//     static load (ms + mu)·g, so the total wheel load never goes below zero;
+//   - a blow-off knee in the damper law, and a Stribeck level in the Dahl element.
+//
 // Stuck rule (the `stuck` output): in stick/slip the damper counts as stuck while the
 // Dahl element is on its pre-sliding branch, |F_f| < 0.95·Fc (gross sliding drives |F_f|
 // to Fc; at 0.95·Fc and d = 1 the element has slid 3·Fc/σ0 since the last reversal).
@@ -102,9 +150,13 @@ class QuarterCar {
   const QuarterCarParameters<double>& parameters() const { return parameters_; }
   int state_size() const { return 4 + StrutDamperPath<double>::state_count(state_); }
   // True for the linear models: stick (the locked damper never moves, so its split does not
-  // act), and slip with a symmetric damper (compression_to_rebound_ratio 1). Stick/slip has
-  // Dahl friction and is never linear.
-  bool is_linear() const;
+  // act), and slip with a symmetric damper (compression_to_rebound_ratio 1) without a knee.
+  // Stick/slip has Dahl friction and is never linear. A bump stop, tyre lift-off or a top mount
+  // that stiffens (k_s ≠ k_l) make every topology nonlinear.
+  bool is_linear() const { return nonlinearity().empty(); }
+  // What makes the model nonlinear, for messages ("" when it is linear), e.g. "the damper's
+  // compression_to_rebound_ratio 0.5".
+  std::string nonlinearity() const;
   // Names of the states in order, for messages and output.
   std::array<const char*, kMaxStates> state_names() const;
 
@@ -135,9 +187,12 @@ class QuarterCar {
         break;
       }
     }
-    const T spring_force = p.spring_path_stiffness_N_per_m() * travel;
+    T spring_force = p.spring_path_stiffness_N_per_m() * travel;
+    if (p.bump_stop_stiffness_N_per_m > 0.0) spring_force -= p.bump_stop().force_N(-travel);
     const KelvinVoigt<T> tyre{p.tyre_stiffness_N_per_m, p.tyre_damping_Ns_per_m};
-    const T tyre_force = tyre.force_N(zu - road.elevation_m, vu - road.rate_m_per_s);
+    T tyre_force = tyre.force_N(zu - road.elevation_m, vu - road.rate_m_per_s);
+    if (p.tyre_lift_off)
+      tyre_force = -lifted_off_tyre_force_N(T(-tyre_force), p.static_tyre_load_N());
     xdot[0] = vs;
     xdot[1] = vu;
     xdot[2] = -(spring_force + path_force) / p.sprung_mass_kg;

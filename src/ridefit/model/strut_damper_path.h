@@ -1,8 +1,8 @@
 #pragma once
 
+#include "ridefit/model/amplitude_stiffening_spring.h"
 #include "ridefit/model/asymmetric_damper.h"
 #include "ridefit/model/dahl_friction.h"
-#include "ridefit/model/linear_spring.h"
 
 namespace ridefit::model {
 
@@ -25,10 +25,16 @@ enum class DamperState {
 //
 // The damper may be asymmetric (AsymmetricDamper: c = c_r in rebound, z_c' > 0, and r·c_r in
 // compression). Both coefficients are > 0, so z_c' has the sign of F_path − F_f: the branch is
-// chosen from that known force and z_c' stays explicit, still without an algebraic loop.
+// chosen from that known force and z_c' stays explicit, still without an algebraic loop. The same
+// holds with the damper's blow-off knee (its inverse is explicit, asymmetric_damper.h).
+//
+// The top mount may stiffen at small amplitude (AmplitudeStiffeningSpring): F_path = F_tm(z − z_c)
+// is then a smooth monotone function of the top-mount deflection instead of k_tm·(z − z_c). It is
+// still computed from the states first, in every topology (stick: F_tm(z); slip and stick/slip:
+// F_tm(z − z_c)), and z_c' follows from it explicitly as before.
 template <typename T>
 struct StrutDamperPath {
-  LinearSpring<T> top_mount;
+  AmplitudeStiffeningSpring<T> top_mount;
   AsymmetricDamper<T> damper;
   DahlFriction<T> friction;
 

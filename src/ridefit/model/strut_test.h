@@ -16,13 +16,18 @@ struct StrutTestParameters {
   T gas_force_N;            // gas spring preload at x = 0 (compression positive: pushes out)
   T gas_stiffness_N_per_m;  // its rate
   T force_offset_N;         // load-cell offset
+  // Optional Stribeck level of the Dahl element (stribeck_curve.h): Fs and v_s; v_s = 0 is off.
+  // Last, with defaults, so an initialiser without them keeps the classic Dahl law.
+  T static_friction_force_N{0.0};
+  T stribeck_velocity_m_per_s{0.0};
 
   // The rig model's damper is symmetric (ratio 1): the hysteresis fit identifies one c, and
   // strut_test_response.h writes this law out by hand for its Newton solves.
   StrutDamperPath<T> damper_path() const {
     return {{top_mount_stiffness_N_per_m},
             {damping_Ns_per_m, T(1.0)},
-            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
+            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent, static_friction_force_N,
+             stribeck_velocity_m_per_s}};
   }
 };
 
@@ -31,7 +36,8 @@ struct StrutTestParameters {
 // F_g0 + k_g·x and a constant offset. States y = [z_c, F_f]: the damper's own deflection and the
 // Dahl force (StrutDamperPath). The rig force, tension positive, is
 //   F = k_tm·(x − z_c) + F_g0 + k_g·x + F_0,
-// and y' = f(y, x) with z_c' = (k_tm·(x − z_c) − F_f)/c, F_f' = Dahl(F_f, z_c').
+// and y' = f(y, x) with z_c' = (k_tm·(x − z_c) − F_f)/c, F_f' = Dahl(F_f, z_c') (with the Stribeck
+// level Fc(z_c') when stribeck_velocity_m_per_s > 0).
 struct StrutTest {
   template <typename T>
   static void derivatives(const T* y, const T& x, const StrutTestParameters<T>& p, T* ydot) {

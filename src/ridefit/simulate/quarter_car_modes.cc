@@ -37,9 +37,10 @@ ModalAnalysis quarter_car_modes(const model::QuarterCar& car) {
   }
   if (!car.is_linear()) {
     throw InputError(fmt::format(
-        "modes are defined for a linear model; in slip the damper's compression_to_rebound_ratio "
-        "{} makes it nonlinear (use 1 for the symmetric damper, or --state stick)",
-        car.parameters().compression_to_rebound_ratio));
+        "modes are defined for a linear model; in {} {} makes it nonlinear (switch the optional "
+        "effects off and use compression_to_rebound_ratio 1; in stick the damper's split and "
+        "knee do not act)",
+        model::to_string(car.damper_state()), car.nonlinearity()));
   }
   const auto& p = car.parameters();
   return analyse_modes(quarter_car_state_matrix(car),

@@ -8,9 +8,8 @@ namespace ridefit::simulate {
 
 LinearStateSpace quarter_car_state_space(const model::QuarterCar& car) {
   if (!car.is_linear()) {
-    throw std::invalid_argument(
-        "quarter_car_state_space: the car has Dahl friction or an asymmetric damper; it is not "
-        "linear");
+    throw std::invalid_argument("quarter_car_state_space: the car is not linear: " +
+                                car.nonlinearity());
   }
   auto unit_road = [](int input) {
     road::RoadSample road;

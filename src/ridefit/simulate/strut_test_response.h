@@ -51,17 +51,32 @@ inline void residual_and_jacobian(const Eigen::Vector2d& y, const Eigen::Vector2
   double force_rate = 0.0, dr_dz = 0.0, dr_df = 0.0;
   if (p.coulomb_force_N > 0.0) {
     const double sign = v < 0.0 ? -1.0 : 1.0;
-    const double s = 1.0 - y[1] / p.coulomb_force_N * sign;
+    // The sliding level L(v) and dL/dv: Fc and 0 without the Stribeck curve.
+    double level = p.coulomb_force_N, dlevel_dv = 0.0;
+    if (p.stribeck_velocity_m_per_s > 0.0) {
+      const double u = v / p.stribeck_velocity_m_per_s;
+      const double excess = (p.static_friction_force_N - p.coulomb_force_N) * std::exp(-u * u);
+      level = p.coulomb_force_N + excess;
+      dlevel_dv = -2.0 * u / p.stribeck_velocity_m_per_s * excess;
+    }
+    const double s = 1.0 - y[1] / level * sign;
     double power = s, slope = 1.0;  // sgn(s)|s|^d and d|s|^(d−1)
     if (p.dahl_exponent != 1.0) {
       const double magnitude = s == 0.0 ? 0.0 : std::pow(std::abs(s), p.dahl_exponent);
       power = s < 0.0 ? -magnitude : magnitude;
       slope = s == 0.0 ? 0.0 : p.dahl_exponent * magnitude / std::abs(s);
     }
-    const double ds_df = -sign / p.coulomb_force_N;
+    const double ds_df = -sign / level;  // at fixed v
     force_rate = p.dahl_sigma0_N_per_m * v * power;
-    dr_dz = p.dahl_sigma0_N_per_m * power * dv_dz;
-    dr_df = p.dahl_sigma0_N_per_m * (power * dv_df + v * slope * ds_df);
+    if (dlevel_dv == 0.0) {
+      dr_dz = p.dahl_sigma0_N_per_m * power * dv_dz;
+      dr_df = p.dahl_sigma0_N_per_m * (power * dv_df + v * slope * ds_df);
+    } else {
+      // s also moves with v through the level: ds/dv = (F·sgn v / L²)·dL/dv.
+      const double ds_dv = y[1] * sign / (level * level) * dlevel_dv;
+      dr_dz = p.dahl_sigma0_N_per_m * (power + v * slope * ds_dv) * dv_dz;
+      dr_df = p.dahl_sigma0_N_per_m * (power * dv_df + v * slope * (ds_df + ds_dv * dv_df));
+    }
   }
   r[0] = y[0] - y_old[0] - h * v;
   r[1] = y[1] - y_old[1] - h * force_rate;
