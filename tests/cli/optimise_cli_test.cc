@@ -335,7 +335,8 @@ TEST(OptimiseCli, PlotWithFrictionAndNoConstraints) {
   testing::TempDir dir("ridefit_optimise_cli");
   const auto study =
       dir.write("study.yaml", replace(passat_study("[]", ""), "constraints: []\n", ""));
-  const auto run = run_cli("optimise " + study + " -q --plot " + (dir.path() / "p.png").string());
+  const auto run = run_cli("optimise " + study + " -q -o " + (dir.path() / "r.yaml").string() +
+                           " --plot " + (dir.path() / "p.png").string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_GT(std::filesystem::file_size(dir.path() / "p.png"), 1000u);
 }

@@ -38,8 +38,7 @@ TEST(QuarterCarFile, OverridesAreValidatedLikeTheFile) {
     load_quarter_car(path, {}, "stuck");
     FAIL() << "an unknown damper state must be rejected";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("slip, stick, stick_slip"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("slip, stick, stick_slip"), std::string::npos) << e.what();
   }
 }
 

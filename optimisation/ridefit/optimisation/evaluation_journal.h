@@ -46,8 +46,8 @@ class EvaluationJournal {
   // last line (the run was killed while writing) is cut off, and any other malformed line (not
   // JSON, or x, cases or metrics of another size than `shape`, or a metric that is not a finite
   // number >= 0) is an InputError naming its line number.
-  static EvaluationJournal resume(const std::filesystem::path& path,
-                                  const std::string& fingerprint, const Shape& shape);
+  static EvaluationJournal resume(const std::filesystem::path& path, const std::string& fingerprint,
+                                  const Shape& shape);
 
   EvaluationJournal(EvaluationJournal&& other) noexcept;
 

@@ -196,8 +196,8 @@ YamlMap YamlMap::map(const std::string& key) const {
 std::vector<double> YamlMap::numbers(const std::string& key) const {
   const YAML::Node value = required(key);
   if (!value.IsSequence() || value.size() == 0) {
-    throw InputError(fmt::format("{} must be a non-empty list of numbers, e.g. [20, 40, 60]",
-                                 locate(key)));
+    throw InputError(
+        fmt::format("{} must be a non-empty list of numbers, e.g. [20, 40, 60]", locate(key)));
   }
   std::vector<double> result;
   for (std::size_t i = 0; i < value.size(); ++i) {
