@@ -1,0 +1,80 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ridefit::fitting::diagnose {
+
+// One channel of a record, measured and simulated on the same time base (same length, same
+// sample rate), e.g. "wheel_acc" in m/s², or "force" in N for a strut-rig loop.
+struct ChannelPair {
+  std::string name;
+  std::vector<double> measured;
+  std::vector<double> simulated;
+};
+
+struct DisagreementOptions {
+  double band_low_Hz = 0.5;    // the comparison band (the road's excitation band)
+  double band_high_Hz = 30.0;
+  double above_band_high_Hz = 0.0;  // > band_high_Hz: also compare (band_high, above_band_high]
+                                    // for energy nonlinear effects put above the road's band;
+                                    // 0 = up to a quarter of the sample rate
+  double segment_s = 4.0;      // Welch segments: periodic Hann, 50 % overlap
+  double confidence = 0.99;    // of the measured PSD's χ² interval (signal/psd_confidence.h)
+  double min_region_dB = 1.0;  // a region must also differ by at least this much on average
+  int min_region_bins = 2;     // and span at least this many bins
+};
+
+// A band where simulation and measurement differ significantly: contiguous bins where the
+// simulated PSD lies outside the measured PSD's confidence interval on the same side (gaps of
+// one bin bridged), whose mean difference is at least min_region_dB.
+struct DisagreementRegion {
+  std::string channel;
+  double low_Hz = 0.0;
+  double high_Hz = 0.0;
+  double size_dB = 0.0;  // mean of 10·log10(P_sim / P_meas) over the region's bins (signed)
+  double measured_peak_Hz = 0.0;   // where the measured PSD is largest inside the region
+  double simulated_peak_Hz = 0.0;  // where the simulated PSD is largest inside the region
+  bool above_band = false;         // lies above the excitation band
+};
+
+struct ChannelDisagreement {
+  std::string channel;
+  std::vector<double> frequency_Hz;  // bins of the band and of the above-band range
+  std::vector<double> measured_psd, simulated_psd;
+  std::vector<double> measured_lower, measured_upper;  // the measured PSD's interval
+  std::vector<double> ratio_dB;                        // 10·log10(P_sim / P_meas) per bin
+  std::vector<bool> significant;                       // simulated outside the interval
+  // The spectral gap: RMS over the band's bins of ratio_dB [dB]; 0 when they agree exactly.
+  double gap_dB = 0.0;
+  // Peak of each PSD over the band (after 3-bin smoothing so one noisy bin cannot win).
+  double measured_peak_Hz = 0.0;
+  double simulated_peak_Hz = 0.0;
+  // Time domain: RMS of (simulated − measured), and that over the RMS of the measured signal.
+  double residual_rms = 0.0;
+  double nrmse = 0.0;
+  // Whiteness of the residual: largest |autocorrelation| over lags 1..20 samples of the
+  // residual, and the Ljung-Box p-value over those lags (small p: structure left).
+  double residual_max_autocorrelation = 0.0;
+  double residual_whiteness_p = 0.0;
+  // Amplitude dependence: the residual RMS where |measured| is in its top third over that
+  // where it is in its bottom third (≫ 1 or ≪ 1: the error depends on amplitude).
+  double amplitude_dependence = 0.0;
+  // Power above the band over power in the band, measured and simulated.
+  double measured_above_band_share = 0.0;
+  double simulated_above_band_share = 0.0;
+};
+
+struct DisagreementMap {
+  std::vector<ChannelDisagreement> channels;
+  std::vector<DisagreementRegion> regions;  // all channels, largest |size_dB| first
+  // RMS of the channels' gap_dB (the gap the diagnosis reports before and after).
+  double gap_dB = 0.0;
+};
+
+// Compares measurement and simulation channel by channel. InputError (naming the channel) for
+// series of different lengths, too short for one segment, or non-finite samples.
+DisagreementMap map_disagreement(const std::vector<ChannelPair>& channels, double sample_rate_Hz,
+                                 const DisagreementOptions& options = {});
+
+}  // namespace ridefit::fitting::diagnose
