@@ -14,6 +14,8 @@ void register_sweep(CLI::App& app);
 void register_fit(CLI::App& app);
 void register_generate_lab(CLI::App& app);
 void register_optimise(CLI::App& app);
+void register_diagnose(CLI::App& app);
+void register_generate_hidden(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
@@ -24,6 +26,8 @@ inline void register_subcommands(CLI::App& app) {
   register_fit(app);
   register_generate_lab(app);
   register_optimise(app);
+  register_diagnose(app);
+  register_generate_hidden(app);
 }
 
 }  // namespace ridefit::cli

@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <set>
@@ -11,6 +12,7 @@
 
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/model/quarter_car_parameter_names.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
 #include "ridefit/signal/hann_window.h"
@@ -20,42 +22,18 @@
 namespace ridefit::fitting {
 namespace {
 
-constexpr int kMaxFree = 4;
-using Jet = ceres::Jet<double, kMaxFree>;
-
-constexpr const char* kNames[] = {"sprung_mass_kg",
-                                  "unsprung_mass_kg",
-                                  "tyre_stiffness_N_per_m",
-                                  "tyre_damping_Ns_per_m",
-                                  "spring_stiffness_N_per_m",
-                                  "top_mount_spring_path_stiffness_N_per_m",
-                                  "top_mount_stiffness_N_per_m",
-                                  "damping_Ns_per_m",
-                                  "dahl_sigma0_N_per_m",
-                                  "coulomb_force_N",
-                                  "dahl_exponent"};
+constexpr int kMaxFree = 6;
 
 template <typename T>
 T& field(model::QuarterCarParameters<T>& p, std::size_t index) {
-  T* fields[] = {&p.sprung_mass_kg,
-                 &p.unsprung_mass_kg,
-                 &p.tyre_stiffness_N_per_m,
-                 &p.tyre_damping_Ns_per_m,
-                 &p.spring_stiffness_N_per_m,
-                 &p.top_mount_spring_path_stiffness_N_per_m,
-                 &p.top_mount_stiffness_N_per_m,
-                 &p.damping_Ns_per_m,
-                 &p.dahl_sigma0_N_per_m,
-                 &p.coulomb_force_N,
-                 &p.dahl_exponent};
-  return *fields[index];
+  return model::quarter_car_parameter(p, index);
 }
 
 std::size_t parameter_index(const std::string& name) {
+  if (const auto index = model::quarter_car_parameter_index(name)) return *index;
   std::string list;
-  for (std::size_t i = 0; i < std::size(kNames); ++i) {
-    if (name == kNames[i]) return i;
-    list += (list.empty() ? "" : ", ") + std::string(kNames[i]);
+  for (const auto known : model::kQuarterCarParameterNames) {
+    list += (list.empty() ? "" : ", ") + std::string(known);
   }
   throw InputError(fmt::format("'{}' is not a quarter-car parameter; one of: {}", name, list));
 }
@@ -106,7 +84,12 @@ struct WelchBins {
   }
 };
 
+// The Jet's size is the number of free parameters rounded up to 2, 4 or 6: the simulation's cost
+// grows with it, and most fits free two to four.
+template <int N>
 class PsdCost : public ceres::CostFunction {
+  using Jet = ceres::Jet<double, N>;
+
  public:
   PsdCost(const PsdMeasurement& m, const model::QuarterCar& car, std::vector<std::size_t> fields,
           std::vector<double> units, WelchBins welch, std::vector<double> measured_body_log,
@@ -261,12 +244,23 @@ struct PsdSetup {
 };
 
 PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
-                 const PsdFitOptions& options) {
-  if (options.free.empty() || options.free.size() > kMaxFree) {
+                 const PsdFitOptions& options, bool fitting = true) {
+  if (fitting && (options.free.empty() || options.free.size() > kMaxFree)) {
     throw InputError(fmt::format("--free: name 1 to {} parameters to fit", kMaxFree));
   }
+  // Known defect: with a blow-off knee on the damper's branch, the Jet tangents through the SDIRK
+  // steps disagree with central differences (damping_Ns_per_m's column by ~70 % on a class A
+  // road), so the Jacobian handed to Ceres would not be exact. Refuse rather than fit wrongly.
+  if (car.parameters().damper_knee_velocity_m_per_s > 0.0) {
+    throw InputError(
+        "the PSD fit does not yet support a damper with a blow-off knee "
+        "(damper_knee_velocity_m_per_s > 0): its exact Jacobian is not right there; remove the "
+        "knee keys to fit the other parameters");
+  }
   std::vector<std::size_t> fields;
-  for (const auto& name : options.free) fields.push_back(parameter_index(name));
+  if (fitting) {
+    for (const auto& name : options.free) fields.push_back(parameter_index(name));
+  }
   WelchBins welch;
   welch.sample_rate_Hz = m.sample_rate_Hz;
   welch.length = static_cast<std::size_t>(std::lround(options.segment_s * m.sample_rate_Hz));
@@ -280,7 +274,7 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
     const double f = static_cast<double>(k) * m.sample_rate_Hz / static_cast<double>(welch.length);
     if (f >= options.band_low_Hz && f <= options.band_high_Hz) welch.bins.push_back(k);
   }
-  if (welch.bins.size() < options.free.size() + 2) {
+  if (welch.bins.size() < fields.size() + 2) {
     throw InputError(fmt::format("band {}–{} Hz holds {} PSD bins; widen it", options.band_low_Hz,
                                  options.band_high_Hz, welch.bins.size()));
   }
@@ -308,13 +302,46 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
   return {fields, bounds, units, welch, body_log, wheel_log};
 }
 
+ceres::CostFunction* new_psd_cost(const PsdMeasurement& m, const model::QuarterCar& car,
+                                  const PsdSetup& s, int steps) {
+  const std::size_t n = s.fields.size();
+  if (n <= 2) {
+    return new PsdCost<2>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, steps);
+  }
+  if (n <= 4) {
+    return new PsdCost<4>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, steps);
+  }
+  return new PsdCost<kMaxFree>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, steps);
+}
+
 }  // namespace
+
+std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::QuarterCar& car,
+                                        const PsdFitOptions& options) {
+  const PsdSetup setup = prepare(m, car, options, false);
+  const auto series = simulate::quarter_car_accelerations<double>(
+      car, car.parameters(), car.parameters(), *m.road, m.time_s, options.steps_per_sample);
+  if (!series) return std::nullopt;
+  PsdMismatch mismatch;
+  for (const auto& [acc, measured_log] :
+       {std::pair{&series->body, &setup.body_log}, std::pair{&series->wheel, &setup.wheel_log}}) {
+    if (measured_log->empty()) continue;
+    const std::vector<double> simulated_log = log_psd(setup.welch, *acc);
+    for (std::size_t b = 0; b < simulated_log.size(); ++b) {
+      const double r = simulated_log[b] - (*measured_log)[b];
+      mismatch.cost += 0.5 * r * r;
+      ++mismatch.residuals;
+    }
+  }
+  mismatch.body_acc_m_per_s2 = std::move(series->body);
+  mismatch.wheel_acc_m_per_s2 = std::move(series->wheel);
+  return mismatch;
+}
 
 ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
                                    const PsdFitOptions& options) {
   const PsdSetup setup = prepare(measurement, car, options);
-  return new PsdCost(measurement, car, setup.fields, setup.units, setup.welch, setup.body_log,
-                     setup.wheel_log, options.steps_per_sample);
+  return new_psd_cost(measurement, car, setup, options.steps_per_sample);
 }
 
 PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
@@ -335,8 +362,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
       x[i] = v / units[i];
     }
     ceres::Problem problem;
-    auto* cost =
-        new PsdCost(m, car, fields, units, welch, body_log, wheel_log, options.steps_per_sample);
+    ceres::CostFunction* cost = new_psd_cost(m, car, setup, options.steps_per_sample);
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
     ceres::LossFunction* loss = nullptr;
@@ -370,7 +396,18 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
     for (std::size_t i = 0; i < x.size(); ++i) {
       for (std::size_t j = i; j < x.size(); ++j) pairs.emplace_back(&x[i], &x[j]);
     }
-    const bool have = dof > 0 && covariance.Compute(pairs, &problem);
+    // Ceres' dense SVD must not see a non-finite Jacobian (it can crash inside Eigen): check the
+    // Jacobian at the optimum first, and report no standard errors when it is not finite.
+    const bool finite_jacobian = [&] {
+      ceres::CRSMatrix jacobian;
+      if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), nullptr, nullptr, nullptr,
+                            &jacobian)) {
+        return false;
+      }
+      return std::all_of(jacobian.values.begin(), jacobian.values.end(),
+                         [](double v) { return std::isfinite(v); });
+    }();
+    const bool have = dof > 0 && finite_jacobian && covariance.Compute(pairs, &problem);
     const auto k = static_cast<Eigen::Index>(fields.size());
     Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(k, k);
     if (have) {

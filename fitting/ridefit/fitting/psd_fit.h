@@ -35,7 +35,7 @@ PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
                                     const std::filesystem::path& excitation_file = {});
 
 struct PsdFitOptions {
-  std::vector<std::string> free;                            // quarter-car keys, at most 4
+  std::vector<std::string> free;                            // quarter-car keys, at most 6
   std::map<std::string, std::pair<double, double>> bounds;  // default: a decade each way
   double band_low_Hz = 0.5;
   double band_high_Hz = 30.0;
@@ -76,6 +76,18 @@ struct PsdFitResult {
 // for the gradient check. The caller owns it; `measurement` and `car` must outlive it.
 ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
                                    const PsdFitOptions& options);
+
+// How far `car` is from `measurement` on the fit's own terms (band, segments, steps; `free` is
+// ignored): ½·Σ r² over the log-PSD residuals of both channels, their count, and the simulated
+// accelerations on the measurement's time base. None when the simulation fails (a Newton stage
+// does not converge). Scores a fitted model on data the fit did not see.
+struct PsdMismatch {
+  double cost = 0.0;
+  std::size_t residuals = 0;
+  std::vector<double> body_acc_m_per_s2, wheel_acc_m_per_s2;
+};
+std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& measurement,
+                                        const model::QuarterCar& car, const PsdFitOptions& options);
 
 PsdFitResult fit_psd(const PsdMeasurement& measurement, const model::QuarterCar& car,
                      const PsdFitOptions& options);

@@ -14,15 +14,16 @@ struct ChannelPair {
 };
 
 struct DisagreementOptions {
-  double band_low_Hz = 0.5;    // the comparison band (the road's excitation band)
+  double band_low_Hz = 0.5;  // the comparison band (the road's excitation band)
   double band_high_Hz = 30.0;
   double above_band_high_Hz = 0.0;  // > band_high_Hz: also compare (band_high, above_band_high]
                                     // for energy nonlinear effects put above the road's band;
-                                    // 0 = up to a quarter of the sample rate
-  double segment_s = 4.0;      // Welch segments: periodic Hann, 50 % overlap
-  double confidence = 0.99;    // of the measured PSD's χ² interval (signal/psd_confidence.h)
-  double min_region_dB = 1.0;  // a region must also differ by at least this much on average
-  int min_region_bins = 2;     // and span at least this many bins
+                                    // 0 = twice band_high_Hz, at most a quarter of the
+                                    // sample rate
+  double segment_s = 4.0;           // Welch segments: periodic Hann, 50 % overlap
+  double confidence = 0.99;         // of the measured PSD's χ² interval (signal/psd_confidence.h)
+  double min_region_dB = 1.0;       // a region must also differ by at least this much on average
+  int min_region_bins = 2;          // and span at least this many bins
 };
 
 // A band where simulation and measurement differ significantly: contiguous bins where the

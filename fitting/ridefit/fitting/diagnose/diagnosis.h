@@ -1,0 +1,108 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ridefit/fitting/diagnose/disagreement_map.h"
+#include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/fitting/psd_fit.h"
+
+namespace ridefit::fitting::diagnose {
+
+// The records a diagnosis uses: fits see only `training`; every score, map and figure is taken
+// on `held_out` (a second record, or the second half of the only one), so a model cannot win by
+// fitting the noise of the data it is judged on.
+struct DiagnosisData {
+  PsdMeasurement training;
+  PsdMeasurement held_out;
+};
+
+// Splits one record at its middle into training (first half) and held-out data (second half).
+// The second half's simulation starts at rest at its own first sample, as the first one does.
+DiagnosisData split_record(const PsdMeasurement& record);
+
+struct DiagnosisOptions {
+  // The baseline's parameters every fit frees (quarter-car keys); empty = the default: the
+  // damping, and the Coulomb force when the baseline has Dahl friction (a locked damper: the
+  // sprung mass).
+  std::vector<std::string> baseline_free;
+  std::vector<std::string> effects;  // ids to try; empty = the whole library
+  PsdFitOptions fit;  // band, segments, iterations (free and steps_per_sample are set here)
+  // Integration steps: effects are screened (fitted and ranked) with steps of at most
+  // screening_step_s; the baseline and the named effects are then refitted with steps of at
+  // most final_step_s, whose figures the report, the map and the model show. SDIRK2's frequency
+  // error is O((ωh)²): at 24 Hz, 2.5 ms shifts a mode by ~1 %, enough to bias a stiffness by a
+  // few per cent, so the reported fit takes the finer step.
+  double screening_step_s = 2.5e-3;
+  double final_step_s = 1.25e-3;
+  int screening_iterations = 25;  // at most, per screening fit
+  DisagreementOptions map;        // the map's settings; its band follows `fit`
+  // An effect is accepted when it lowers the held-out cost by at least this share AND lowers
+  // the training BIC by at least min_bic_drop (so extra parameters cannot win by themselves).
+  double min_held_out_improvement = 0.3;
+  double min_bic_drop = 20.0;
+  // A disagreement region left after the last accepted effect counts as unexplained when it is
+  // inside the excitation band (not above it) and its mean size is at least this.
+  double unexplained_dB = 1.5;
+  int max_effects = 2;
+  unsigned threads = 0;  // 0 = every core
+};
+
+struct FittedValue {
+  std::string name;
+  double value = 0.0;
+  std::optional<double> standard_error;
+};
+
+// One effect tried in one round.
+struct EffectTrial {
+  std::string id;
+  std::string skipped;                  // why it was not tried ("" when it was)
+  std::string failed;                   // why its fit failed ("" when it did not)
+  std::vector<FittedValue> parameters;  // the effect's own parameters, then the baseline's
+  int free_parameters = 0;
+  int iterations = 0;          // of its fit
+  double training_cost = 0.0;  // ½·Σ r² of the log-PSD residuals
+  double held_out_cost = 0.0;
+  double bic = 0.0;                   // n·ln(2·cost/n) + k·ln(n) on the training data
+  double held_out_improvement = 0.0;  // 1 − held-out cost / the round's starting held-out cost
+  double bic_change = 0.0;            // BIC − the round's starting BIC (negative: better)
+  double held_out_gap_dB = 0.0;       // the disagreement map's gap on the held-out data
+  bool significant = false;           // passes both tests
+  DiagnosisModel model;               // fitted, with the effect
+};
+
+struct DiagnosisRound {
+  std::vector<EffectTrial> trials;  // tried ones ranked by held-out cost, then skipped/failed
+  std::string accepted;             // the id, or "" when nothing was significant
+};
+
+struct DiagnosisResult {
+  DiagnosisModel baseline;  // with the baseline's free parameters fitted
+  std::vector<FittedValue> baseline_parameters;
+  double baseline_held_out_cost = 0.0;
+  DisagreementMap before;  // held-out data against the fitted baseline
+  DisagreementMap after;   // held-out data against the final model
+  std::vector<DiagnosisRound> rounds;
+  std::vector<std::string> named;  // accepted effect ids, in order
+  DiagnosisModel final_model;      // the baseline with the named effects, refitted
+  std::vector<FittedValue> final_parameters;
+  std::vector<DisagreementRegion> unexplained;  // significant regions no effect explained
+  // The held-out simulations behind `before` and `after` (accelerations, measured time base).
+  std::vector<double> before_body, before_wheel, after_body, after_wheel;
+  // "missing effect found: …", "no missing effect found", or the unexplained disagreement.
+  std::string verdict;
+};
+
+// Fits the baseline, maps its disagreement with the held-out data, then tries each applicable
+// effect of the library (in parallel): adds it, refits every free parameter on the training
+// data, and scores it on the held-out data and by BIC. The best significant one is accepted and
+// the search repeats from it, up to max_effects rounds. `progress` (may be empty) receives one
+// line per finished step. InputError for an unknown effect id or a bad free parameter.
+DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& data,
+                         const DiagnosisOptions& options,
+                         const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,232 @@
+#include "ridefit/fitting/diagnose/disagreement_map.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
+#include <cmath>
+
+#include "ridefit/io/input_error.h"
+#include "ridefit/signal/psd_confidence.h"
+#include "ridefit/signal/statistics.h"
+#include "ridefit/signal/welch_psd.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+constexpr int kWhitenessLags = 20;
+
+void check(const std::vector<ChannelPair>& channels, double fs, const DisagreementOptions& o) {
+  if (channels.empty()) throw InputError("the disagreement map needs at least one channel");
+  if (!(fs > 0.0) || !std::isfinite(fs)) {
+    throw InputError(fmt::format("sample rate {} Hz: expected a finite value > 0", fs));
+  }
+  if (!(o.band_low_Hz >= 0.0) || !(o.band_low_Hz < o.band_high_Hz) ||
+      !(o.band_high_Hz < 0.5 * fs)) {
+    throw InputError(
+        fmt::format("band {}–{} Hz: expected 0 <= low < high below the Nyquist frequency {} Hz",
+                    o.band_low_Hz, o.band_high_Hz, 0.5 * fs));
+  }
+  if (!(o.segment_s > 0.0)) {
+    throw InputError(fmt::format("segment {} s: expected a length > 0", o.segment_s));
+  }
+  if (!(o.confidence > 0.0 && o.confidence < 1.0)) {
+    throw InputError(fmt::format("confidence {}: expected a value in (0, 1)", o.confidence));
+  }
+  for (const auto& c : channels) {
+    if (c.measured.size() != c.simulated.size()) {
+      throw InputError(fmt::format("channel {}: {} measured against {} simulated samples", c.name,
+                                   c.measured.size(), c.simulated.size()));
+    }
+    if (static_cast<double>(c.measured.size()) < o.segment_s * fs) {
+      throw InputError(fmt::format("channel {}: {} samples, fewer than one {} s segment", c.name,
+                                   c.measured.size(), o.segment_s));
+    }
+    for (const auto* series : {&c.measured, &c.simulated}) {
+      for (std::size_t k = 0; k < series->size(); ++k) {
+        if (!std::isfinite((*series)[k])) {
+          throw InputError(fmt::format("channel {}: sample {} of the {} series is not finite",
+                                       c.name, k,
+                                       series == &c.measured ? "measured" : "simulated"));
+        }
+      }
+    }
+  }
+}
+
+// Ljung–Box over lags 1..h of a residual: the largest |autocorrelation| and the p-value.
+std::pair<double, double> whiteness(const std::vector<double>& r) {
+  const auto n = static_cast<double>(r.size());
+  double mean = 0.0;
+  for (double v : r) mean += v;
+  mean /= n;
+  double c0 = 0.0;
+  for (double v : r) c0 += (v - mean) * (v - mean);
+  if (!(c0 > 0.0)) return {0.0, 1.0};
+  double q = 0.0, largest = 0.0;
+  for (int lag = 1; lag <= kWhitenessLags; ++lag) {
+    double c = 0.0;
+    for (std::size_t k = static_cast<std::size_t>(lag); k < r.size(); ++k) {
+      c += (r[k] - mean) * (r[k - static_cast<std::size_t>(lag)] - mean);
+    }
+    const double rho = c / c0;
+    largest = std::max(largest, std::abs(rho));
+    q += rho * rho / (n - lag);
+  }
+  q *= n * (n + 2.0);
+  const boost::math::chi_squared chi2(kWhitenessLags);
+  return {largest, boost::math::cdf(boost::math::complement(chi2, q))};
+}
+
+// Residual RMS where |measured| is in its top third over that in its bottom third.
+double amplitude_dependence(const ChannelPair& c) {
+  std::vector<double> magnitude(c.measured.size());
+  for (std::size_t k = 0; k < magnitude.size(); ++k) magnitude[k] = std::abs(c.measured[k]);
+  std::vector<double> sorted = magnitude;
+  const std::size_t third = sorted.size() / 3;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(third),
+                   sorted.end());
+  const double low = sorted[third];
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(2 * third),
+                   sorted.end());
+  const double high = sorted[2 * third];
+  double top = 0.0, bottom = 0.0;
+  std::size_t n_top = 0, n_bottom = 0;
+  for (std::size_t k = 0; k < magnitude.size(); ++k) {
+    const double e = c.simulated[k] - c.measured[k];
+    if (magnitude[k] >= high) {
+      top += e * e;
+      ++n_top;
+    } else if (magnitude[k] <= low) {
+      bottom += e * e;
+      ++n_bottom;
+    }
+  }
+  if (n_top == 0 || n_bottom == 0 || !(bottom > 0.0)) return 1.0;
+  return std::sqrt((top / static_cast<double>(n_top)) / (bottom / static_cast<double>(n_bottom)));
+}
+
+double smoothed_peak(const std::vector<double>& f, const std::vector<double>& p,
+                     std::size_t count) {
+  double best = -1.0, at = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double left = p[k > 0 ? k - 1 : k], right = p[k + 1 < count ? k + 1 : k];
+    const double s = (left + p[k] + right) / 3.0;
+    if (s > best) {
+      best = s;
+      at = f[k];
+    }
+  }
+  return at;
+}
+
+// Runs of significant bins of one sign (single-bin gaps bridged) inside [first, last).
+void find_regions(const ChannelDisagreement& d, std::size_t first, std::size_t last,
+                  bool above_band, const DisagreementOptions& o,
+                  std::vector<DisagreementRegion>& out) {
+  std::size_t k = first;
+  while (k < last) {
+    if (!d.significant[k]) {
+      ++k;
+      continue;
+    }
+    const bool high = d.ratio_dB[k] > 0.0;
+    std::size_t end = k + 1;  // one past the region's last significant bin
+    for (std::size_t j = k + 1; j < last; ++j) {
+      const bool same = d.significant[j] && (d.ratio_dB[j] > 0.0) == high;
+      if (same) {
+        end = j + 1;
+      } else if (j > end) {
+        break;  // a gap of two bins ends it
+      }
+    }
+    const std::size_t bins = end - k;
+    double mean = 0.0;
+    std::size_t measured_peak = k, simulated_peak = k;
+    for (std::size_t j = k; j < end; ++j) {
+      mean += d.ratio_dB[j];
+      if (d.measured_psd[j] > d.measured_psd[measured_peak]) measured_peak = j;
+      if (d.simulated_psd[j] > d.simulated_psd[simulated_peak]) simulated_peak = j;
+    }
+    mean /= static_cast<double>(bins);
+    if (bins >= static_cast<std::size_t>(o.min_region_bins) && std::abs(mean) >= o.min_region_dB) {
+      out.push_back({d.channel, d.frequency_Hz[k], d.frequency_Hz[end - 1], mean,
+                     d.frequency_Hz[measured_peak], d.frequency_Hz[simulated_peak], above_band});
+    }
+    k = end;
+  }
+}
+
+}  // namespace
+
+DisagreementMap map_disagreement(const std::vector<ChannelPair>& channels, double sample_rate_Hz,
+                                 const DisagreementOptions& options) {
+  check(channels, sample_rate_Hz, options);
+  const double above_high = options.above_band_high_Hz > options.band_high_Hz
+                                ? std::min(options.above_band_high_Hz, 0.5 * sample_rate_Hz)
+                                : std::min(2.0 * options.band_high_Hz, 0.25 * sample_rate_Hz);
+  signal::WelchOptions welch;
+  welch.segment_length_s = options.segment_s;
+  DisagreementMap map;
+  double gap_power = 0.0;
+  for (const auto& c : channels) {
+    const auto measured = signal::welch_psd(c.measured, sample_rate_Hz, welch);
+    const auto simulated = signal::welch_psd(c.simulated, sample_rate_Hz, welch);
+    const auto interval = signal::psd_confidence_interval(measured, options.confidence);
+    ChannelDisagreement d;
+    d.channel = c.name;
+    std::size_t band_bins = 0;
+    double in_band_measured = 0.0, in_band_simulated = 0.0, above_measured = 0.0,
+           above_simulated = 0.0, sum_squares = 0.0;
+    for (std::size_t k = 0; k < measured.frequency_Hz.size(); ++k) {
+      const double f = measured.frequency_Hz[k];
+      const bool in_band = f >= options.band_low_Hz && f <= options.band_high_Hz;
+      const bool above = f > options.band_high_Hz && f <= above_high;
+      if (!in_band && !above) continue;
+      const double pm = std::max(measured.psd[k], 1e-300), ps = std::max(simulated.psd[k], 1e-300);
+      const double ratio = 10.0 * std::log10(ps / pm);
+      d.frequency_Hz.push_back(f);
+      d.measured_psd.push_back(pm);
+      d.simulated_psd.push_back(ps);
+      d.measured_lower.push_back(interval.lower[k]);
+      d.measured_upper.push_back(interval.upper[k]);
+      d.ratio_dB.push_back(ratio);
+      d.significant.push_back(ps < interval.lower[k] || ps > interval.upper[k]);
+      if (in_band) {
+        ++band_bins;
+        sum_squares += ratio * ratio;
+        in_band_measured += pm;
+        in_band_simulated += ps;
+      } else {
+        above_measured += pm;
+        above_simulated += ps;
+      }
+    }
+    // The band's bins come first (frequencies ascend and the band lies below the rest).
+    d.gap_dB = band_bins > 0 ? std::sqrt(sum_squares / static_cast<double>(band_bins)) : 0.0;
+    d.measured_peak_Hz = smoothed_peak(d.frequency_Hz, d.measured_psd, band_bins);
+    d.simulated_peak_Hz = smoothed_peak(d.frequency_Hz, d.simulated_psd, band_bins);
+    d.measured_above_band_share = in_band_measured > 0.0 ? above_measured / in_band_measured : 0.0;
+    d.simulated_above_band_share =
+        in_band_simulated > 0.0 ? above_simulated / in_band_simulated : 0.0;
+    std::vector<double> residual(c.measured.size());
+    for (std::size_t k = 0; k < residual.size(); ++k) residual[k] = c.simulated[k] - c.measured[k];
+    d.residual_rms = signal::rms(residual);
+    const double measured_rms = signal::rms(c.measured);
+    d.nrmse = measured_rms > 0.0 ? d.residual_rms / measured_rms : 0.0;
+    std::tie(d.residual_max_autocorrelation, d.residual_whiteness_p) = whiteness(residual);
+    d.amplitude_dependence = amplitude_dependence(c);
+    find_regions(d, 0, band_bins, false, options, map.regions);
+    find_regions(d, band_bins, d.frequency_Hz.size(), true, options, map.regions);
+    gap_power += d.gap_dB * d.gap_dB;
+    map.channels.push_back(std::move(d));
+  }
+  map.gap_dB = std::sqrt(gap_power / static_cast<double>(channels.size()));
+  std::stable_sort(map.regions.begin(), map.regions.end(),
+                   [](const DisagreementRegion& a, const DisagreementRegion& b) {
+                     return std::abs(a.size_dB) > std::abs(b.size_dB);
+                   });
+  return map;
+}
+
+}  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ridefit/model/quarter_car.h"
+
+namespace ridefit::fitting::diagnose {
+
+// A model under diagnosis, with the data it is compared against in mind: vehicle spectra (a
+// road and body/wheel accelerations) are what the library's effects are tried on.
+struct DiagnosisModel {
+  model::QuarterCar car{model::DamperState::kSlip, model::QuarterCarParameters<double>{}};
+};
+
+// A parameter a fit frees, with the bounds that keep it physical.
+struct FreeParameter {
+  std::string name;  // a quarter-car key (model/quarter_car_parameter_names.h)
+  double lower = 0.0;
+  double upper = 0.0;
+};
+
+// What adding an effect does to a model: keys set to the values its fit starts from (the
+// switch `tyre_lift_off` as 1), an optional change of topology, and its parameters to fit.
+struct EffectChange {
+  std::map<std::string, double> set;
+  std::optional<model::DamperState> damper_state;
+  std::vector<FreeParameter> free;
+  // Further starts for effects whose fit has local minima: each replaces some of `set`'s values;
+  // the fit from every start is run and the lowest training cost kept.
+  std::vector<std::map<std::string, double>> other_starts;
+};
+
+// One physical effect a model may be missing. The id is what reports and JSON show.
+class Effect {
+ public:
+  virtual ~Effect() = default;
+  virtual std::string_view id() const = 0;
+  // One sentence: what it is physically and what it does to the response.
+  virtual std::string_view description() const = 0;
+  // Why the effect cannot be added to `baseline` (it is already there, or the data cannot show
+  // it), or "" when it can.
+  virtual std::string not_applicable(const DiagnosisModel& baseline) const = 0;
+  // The change that adds it, with a start inside its bounds. Called only when applicable.
+  virtual EffectChange change(const DiagnosisModel& baseline) const = 0;
+};
+
+// Every effect, sorted by id. Each lives in diagnose/effects/<id>.cc and defines
+// `std::unique_ptr<Effect> make_<id>()`; CMake generates the list from that folder, so adding an
+// effect is one new file.
+const std::vector<std::unique_ptr<Effect>>& effect_library();
+
+// The effect with this id; InputError listing the ids for an unknown one.
+const Effect& find_effect(std::string_view id);
+
+// `model` with `change` applied (keys set, topology changed).
+DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change);
+
+// A quarter car's value of a key of model/quarter_car_parameter_names.h, or of tyre_lift_off
+// (0 or 1).
+double parameter_value(const model::QuarterCar& car, std::string_view name);
+
+}  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,38 @@
+// bump_stop: progressive contact beyond a compression clearance.
+#include <memory>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+class BumpStop : public Effect {
+ public:
+  std::string_view id() const override { return "bump_stop"; }
+  std::string_view description() const override {
+    return "a progressive bump stop beyond a compression clearance: hard hits on large inputs "
+           "put body energy far above the body mode";
+  }
+  std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.car.parameters().bump_stop_stiffness_N_per_m > 0.0) {
+      return "the baseline already has a bump stop";
+    }
+    return "";
+  }
+  EffectChange change(const DiagnosisModel& baseline) const override {
+    // Start soft (the spring's own rate) and at a typical clearance, so the first evaluations
+    // change the model gently.
+    const double k = baseline.car.parameters().spring_stiffness_N_per_m;
+    return {{{"bump_stop_stiffness_N_per_m", 3.0 * k}, {"bump_stop_clearance_m", 0.02}},
+            std::nullopt,
+            {{"bump_stop_stiffness_N_per_m", 0.1 * k, 1000.0 * k},
+             {"bump_stop_clearance_m", 0.001, 0.2}},
+            {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_bump_stop() { return std::make_unique<BumpStop>(); }
+
+}  // namespace ridefit::fitting::diagnose

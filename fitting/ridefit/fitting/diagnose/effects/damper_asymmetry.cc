@@ -1,0 +1,37 @@
+// damper_asymmetry: rebound and compression damping differ.
+#include <memory>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+class DamperAsymmetry : public Effect {
+ public:
+  std::string_view id() const override { return "damper_asymmetry"; }
+  std::string_view description() const override {
+    return "a damper softer in compression than in rebound (valving): the body rides down on "
+           "rough roads and the response gains even harmonics";
+  }
+  std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.car.damper_state() == model::DamperState::kStick) {
+      return "the baseline's damper is locked (stick): its valving cannot act";
+    }
+    if (baseline.car.parameters().compression_to_rebound_ratio != 1.0) {
+      return "the baseline's damper is already asymmetric";
+    }
+    return "";
+  }
+  EffectChange change(const DiagnosisModel&) const override {
+    return {{{"compression_to_rebound_ratio", 0.7}},
+            std::nullopt,
+            {{"compression_to_rebound_ratio", 0.1, 3.0}},
+            {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_damper_asymmetry() { return std::make_unique<DamperAsymmetry>(); }
+
+}  // namespace ridefit::fitting::diagnose

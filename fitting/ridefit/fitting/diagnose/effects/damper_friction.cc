@@ -1,0 +1,44 @@
+// damper_friction: Dahl friction in the damper path (seed 000, Section 3.1).
+#include <memory>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+class DamperFriction : public Effect {
+ public:
+  std::string_view id() const override { return "damper_friction"; }
+  std::string_view description() const override {
+    return "Dahl friction beside the damper (seal and guide friction): the strut sticks at "
+           "small amplitude, the body mode moves up and the damping seen at low amplitude grows";
+  }
+  std::string not_applicable(const DiagnosisModel& baseline) const override {
+    const auto& car = baseline.car;
+    if (car.damper_state() == model::DamperState::kStick) {
+      return "the baseline's damper is locked (stick): friction beside it cannot act";
+    }
+    if (car.damper_state() == model::DamperState::kStickSlip &&
+        car.parameters().coulomb_force_N > 0.0) {
+      return "the baseline already has Dahl friction";
+    }
+    return "";
+  }
+  EffectChange change(const DiagnosisModel& baseline) const override {
+    // σ0 far above the top mount (the pre-sliding branch is then set by the top mount, which is
+    // why σ0 is not fitted from spectra) unless the model already names one.
+    const double sigma0 = baseline.car.parameters().dahl_sigma0_N_per_m > 1e3
+                              ? baseline.car.parameters().dahl_sigma0_N_per_m
+                              : 5e6;
+    return {{{"dahl_sigma0_N_per_m", sigma0}, {"coulomb_force_N", 30.0}, {"dahl_exponent", 1.0}},
+            model::DamperState::kStickSlip,
+            {{"coulomb_force_N", 1.0, 1000.0}},
+            {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_damper_friction() { return std::make_unique<DamperFriction>(); }
+
+}  // namespace ridefit::fitting::diagnose

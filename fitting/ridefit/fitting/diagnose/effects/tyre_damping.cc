@@ -1,0 +1,34 @@
+// tyre_damping: the tyre's own damping in parallel with its stiffness.
+#include <memory>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+class TyreDamping : public Effect {
+ public:
+  std::string_view id() const override { return "tyre_damping"; }
+  std::string_view description() const override {
+    return "damping in the tyre (rubber hysteresis in the carcass): lowers and widens the "
+           "wheel-hop peak and passes more road input above it";
+  }
+  std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.car.parameters().tyre_damping_Ns_per_m > 0.0) {
+      return "the baseline already has tyre damping (free it with --free to refit it)";
+    }
+    return "";
+  }
+  EffectChange change(const DiagnosisModel&) const override {
+    return {{{"tyre_damping_Ns_per_m", 100.0}},
+            std::nullopt,
+            {{"tyre_damping_Ns_per_m", 1.0, 5000.0}},
+            {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_tyre_damping() { return std::make_unique<TyreDamping>(); }
+
+}  // namespace ridefit::fitting::diagnose

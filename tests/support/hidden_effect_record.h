@@ -1,0 +1,45 @@
+#pragma once
+
+#include <memory>
+#include <random>
+
+#include "ridefit/fitting/psd_fit.h"
+#include "ridefit/road/iso8608.h"
+#include "ridefit/road/measured_road.h"
+#include "ridefit/simulate/quarter_car_simulation.h"
+#include "ridefit/study/sensor_model.h"
+
+namespace ridefit::testing {
+
+// A "measurement" of `truth` on an ISO 8608 road at 50 km/h (CVODE), its accelerations through
+// the sensor model (study/sensor_model.h: 0.1 Hz high-pass, 0.4·fs low-pass, seeded Gaussian
+// noise of `noise` times each channel's RMS): what the diagnosis tests feed their baselines.
+// Each seed is another road realisation and other noise.
+inline fitting::PsdMeasurement hidden_effect_record(const model::QuarterCar& truth,
+                                                    road::Iso8608Class road_class, unsigned seed,
+                                                    double duration_s = 20.0,
+                                                    double sample_rate_Hz = 200.0,
+                                                    double noise = 0.005) {
+  road::Iso8608RoadParameters r;
+  r.road_class = road_class;
+  r.random.speed_m_per_s = 50.0 / 3.6;
+  r.random.duration_s = duration_s;
+  r.random.seed = seed;
+  const auto road = road::make_iso8608_road(r);
+  simulate::SimulationOptions options;
+  options.output_rate_Hz = sample_rate_Hz;
+  const auto run = simulate::simulate(truth, road, options);
+  fitting::PsdMeasurement m;
+  m.source = "record " + std::to_string(seed);
+  m.time_s = run.time_s;
+  m.sample_rate_Hz = sample_rate_Hz;
+  m.road = std::make_shared<road::MeasuredRoad>(run.time_s, run.road_m);
+  std::mt19937_64 rng(1000 + seed);
+  study::SensorModel sensor;
+  sensor.noise_fraction = noise;
+  m.body_acc_m_per_s2 = study::measure(run.body_acc_m_per_s2, sample_rate_Hz, sensor, rng);
+  m.wheel_acc_m_per_s2 = study::measure(run.wheel_acc_m_per_s2, sample_rate_Hz, sensor, rng);
+  return m;
+}
+
+}  // namespace ridefit::testing

@@ -1,0 +1,48 @@
+// `ridefit diagnose`'s engine on the shipped seed case: a 60 s quarter-car record at 500 Hz
+// (datasets/hidden/top_mount_stiffening_stick_slip*.csv, the stick/slip Passat) against the whole
+// effect library, 2 threads.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+#include "ridefit/fitting/diagnose/diagnosis.h"
+#include "ridefit/io/quarter_car_file.h"
+
+namespace {
+
+namespace dx = ridefit::fitting::diagnose;
+
+std::filesystem::path dataset(const char* relative) {
+  return std::filesystem::path(RIDEFIT_SOURCE_DIR) / "datasets" / relative;
+}
+
+void BM_DiagnoseSeedCase60sFullLibrary(benchmark::State& state) {
+  const auto model = ridefit::io::load_quarter_car(dataset("vehicles/passat_b8_front.yaml"));
+  const dx::DiagnosisData data{
+      ridefit::fitting::load_psd_measurement(dataset("hidden/top_mount_stiffening_stick_slip.csv")),
+      ridefit::fitting::load_psd_measurement(
+          dataset("hidden/top_mount_stiffening_stick_slip_2.csv"))};
+  dx::DiagnosisOptions options;
+  options.threads = 2;
+  std::size_t fits = 0;
+  bool named = false;
+  for (auto _ : state) {
+    const dx::DiagnosisResult r = dx::diagnose({model.make_model()}, data, options);
+    fits = 0;
+    for (const auto& round : r.rounds) {
+      for (const auto& t : round.trials) fits += t.skipped.empty() ? 1 : 0;
+    }
+    named = r.named == std::vector<std::string>{"top_mount_amplitude_stiffening"};
+    benchmark::DoNotOptimize(&r);
+  }
+  state.counters["effect_fits"] = static_cast<double>(fits);
+  state.counters["named_correctly"] = named ? 1.0 : 0.0;
+}
+BENCHMARK(BM_DiagnoseSeedCase60sFullLibrary)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

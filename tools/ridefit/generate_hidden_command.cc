@@ -1,0 +1,226 @@
+// ridefit generate-hidden SPEC.yaml -o DIR [--seed N]
+// Measurement records of a richer truth than the model the diagnosis is given: a model file plus
+// effects switched on, simulated (CVODE) over a road, measured through a sensor model
+// (study/sensor_model.h), written as CSVs with a separate truth file the diagnosis never reads.
+//
+// SPEC.yaml (paths relative to it):
+//   datasets:
+//     - name: seed_top_mount_stiffening          # file stem: NAME.csv, NAME_2.csv, NAME_truth.yaml
+//       model: ../vehicles/passat_b8_front.yaml  # the truth's base
+//       damper_state: stick_slip                 # optional: replaces the model's
+//       set: {top_mount_small_amplitude_stiffness_N_per_m: 707000,
+//             top_mount_transition_deflection_m: 0.0005}   # model keys switched on / changed
+//       effects: [top_mount_amplitude_stiffening]          # library ids (or sensor_mount), truth
+//       only excitation: ../excitations/iso8608_class_a_50kmh.yaml duration_s: 60 # default: the
+//       excitation's sample_rate_Hz: 500             # default 500 records: 2 # default 2; record k
+//       >= 2 drives another realisation of a
+//                                       # random road (seed + k - 1) with other noise
+//       sensor: {noise: 0.005, high_pass_Hz: 0.1, low_pass_Hz: 100,
+//                mount: {channel: body_acc, frequency_Hz: 12, damping_ratio: 0.05}}
+//       seed: 11                        # noise seed (default 1)
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <set>
+
+#include <yaml-cpp/yaml.h>
+
+#include "command_options.h"
+#include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/io/atomic_file.h"
+#include "ridefit/io/input_error.h"
+#include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/yaml_map.h"
+#include "ridefit/road/excitation_file.h"
+#include "ridefit/simulate/quarter_car_simulation.h"
+#include "ridefit/study/sensor_model.h"
+#include "subcommands.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct GenerateHiddenFlags {
+  std::string spec_file;
+  std::string output_dir;
+  long seed_offset = 0;
+};
+
+struct Dataset {
+  std::string name;
+  std::filesystem::path model;
+  std::string damper_state;
+  std::map<std::string, double> set;
+  std::vector<std::string> effects;
+  std::filesystem::path excitation;
+  double duration_s = 0.0;
+  double sample_rate_Hz = 500.0;
+  int records = 2;
+  study::SensorModel sensor;
+  std::string mount_channel;
+  long seed = 1;
+};
+
+Dataset read_dataset(const io::YamlMap& d) {
+  Dataset out;
+  out.name = d.text("name");
+  if (out.name.empty() || out.name.find_first_of("/\\ ") != std::string::npos) {
+    throw InputError(fmt::format("{}: a file stem without spaces or slashes", d.locate("name")));
+  }
+  out.model = d.file("model");
+  out.damper_state = d.text_or("damper_state", "");
+  if (d.has("set")) {
+    const io::YamlMap set = d.map("set");
+    for (const auto& key : set.keys()) out.set[key] = set.number(key);
+    set.finish();
+  }
+  std::set<std::string> known{"sensor_mount"};
+  for (const auto& e : fitting::diagnose::effect_library()) known.emplace(e->id());
+  if (d.has("effects")) {
+    for (const auto& id : d.texts("effects")) {
+      if (!known.count(id)) {
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw InputError(
+            fmt::format("{}: unknown effect '{}'; one of: {}", d.locate("effects"), id, list));
+      }
+      out.effects.push_back(id);
+    }
+  }
+  out.excitation = d.file("excitation");
+  out.duration_s = d.has("duration_s") ? d.positive("duration_s") : 0.0;
+  out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 500.0;
+  out.records = static_cast<int>(d.has("records") ? d.integer("records") : 2);
+  if (out.records < 1 || out.records > 20) {
+    throw InputError(fmt::format("{} is {}, expected 1 to 20", d.locate("records"), out.records));
+  }
+  out.seed = d.integer_or("seed", 1);
+  if (d.has("sensor")) {
+    const io::YamlMap s = d.map("sensor");
+    out.sensor.noise_fraction = s.has("noise") ? s.non_negative_up_to("noise", 1.0) : 0.005;
+    out.sensor.high_pass_Hz = s.has("high_pass_Hz") ? s.non_negative("high_pass_Hz") : 0.1;
+    out.sensor.low_pass_Hz = s.has("low_pass_Hz") ? s.positive("low_pass_Hz") : 0.0;
+    if (s.has("mount")) {
+      const io::YamlMap m = s.map("mount");
+      out.mount_channel = m.choice("channel", {"body_acc", "wheel_acc"});
+      out.sensor.mount =
+          study::SensorMount{m.positive("frequency_Hz"), m.positive("damping_ratio")};
+      m.finish();
+    }
+    s.finish();
+  }
+  d.finish();
+  return out;
+}
+
+// The excitation of record k: random roads get seed + k − 1 (another realisation).
+std::unique_ptr<road::RoadInput> excitation_for(const Dataset& d, int record,
+                                                const std::filesystem::path& scratch) {
+  YAML::Node node = YAML::LoadFile(d.excitation.string());
+  const std::string type = node["type"] ? node["type"].as<std::string>() : "";
+  if (record == 1 || (type != "iso8608" && type != "power_law")) {
+    return road::load_excitation(d.excitation);
+  }
+  const long seed = node["seed"] ? node["seed"].as<long>() : 1;
+  node["seed"] = seed + record - 1;
+  {
+    std::ofstream out(scratch);
+    out << node << "\n";
+  }
+  auto road = road::load_excitation(scratch);
+  std::filesystem::remove(scratch);
+  return road;
+}
+
+void run(const GenerateHiddenFlags& flags) {
+  const io::YamlMap spec = io::YamlMap::load(flags.spec_file);
+  std::vector<Dataset> datasets;
+  for (const auto& d : spec.maps("datasets")) datasets.push_back(read_dataset(d));
+  spec.finish();
+  if (datasets.empty()) throw InputError(fmt::format("{}: no datasets", flags.spec_file));
+  // Every model and excitation is checked before anything is simulated or written.
+  std::vector<model::QuarterCar> truths;
+  for (const auto& d : datasets) {
+    truths.push_back(io::load_quarter_car(d.model, d.set, d.damper_state).make_model());
+    road::load_excitation(d.excitation);
+    study::SensorModel check = d.sensor;
+    std::mt19937_64 rng(0);
+    study::measure(std::vector<double>(8, 0.0), d.sample_rate_Hz, check, rng);
+  }
+  io::prepare_output_directory(flags.output_dir, "-o");
+  const std::filesystem::path dir = flags.output_dir;
+  for (std::size_t i = 0; i < datasets.size(); ++i) {
+    const Dataset& d = datasets[i];
+    YAML::Node truth;
+    truth["dataset"] = d.name;
+    truth["model"] = std::filesystem::relative(d.model, dir).string();
+    if (!d.damper_state.empty()) truth["damper_state"] = d.damper_state;
+    for (const auto& [key, value] : d.set) truth["set"][key] = value;
+    truth["effects"] = YAML::Node(YAML::NodeType::Sequence);
+    for (const auto& id : d.effects) truth["effects"].push_back(id);
+    truth["excitation"] = std::filesystem::relative(d.excitation, dir).string();
+    truth["sample_rate_Hz"] = d.sample_rate_Hz;
+    truth["noise_fraction"] = d.sensor.noise_fraction;
+    truth["high_pass_Hz"] = d.sensor.high_pass_Hz;
+    truth["low_pass_Hz"] = d.sensor.low_pass_Hz > 0 ? d.sensor.low_pass_Hz : 0.4 * d.sample_rate_Hz;
+    if (d.sensor.mount) {
+      truth["mount"]["channel"] = d.mount_channel;
+      truth["mount"]["frequency_Hz"] = d.sensor.mount->frequency_Hz;
+      truth["mount"]["damping_ratio"] = d.sensor.mount->damping_ratio;
+    }
+    for (int k = 1; k <= d.records; ++k) {
+      const auto road = excitation_for(d, k, dir / (".road_" + d.name + ".yaml"));
+      simulate::SimulationOptions options;
+      options.output_rate_Hz = d.sample_rate_Hz;
+      options.duration_s = d.duration_s;
+      const auto run = simulate::simulate(truths[i], *road, options);
+      std::mt19937_64 rng(static_cast<unsigned long>(d.seed + flags.seed_offset) * 1000u +
+                          static_cast<unsigned long>(k));
+      study::SensorModel plain = d.sensor;
+      plain.mount.reset();
+      const auto& mounted = d.sensor;
+      const auto body = study::measure(run.body_acc_m_per_s2, d.sample_rate_Hz,
+                                       d.mount_channel == "body_acc" ? mounted : plain, rng);
+      const auto wheel = study::measure(run.wheel_acc_m_per_s2, d.sample_rate_Hz,
+                                        d.mount_channel == "wheel_acc" ? mounted : plain, rng);
+      const std::string file = k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k);
+      io::write_atomically(dir / file, [&](std::ostream& out) {
+        out << "time[s],road[m],body_acc[m/s^2],wheel_acc[m/s^2]\n";
+        for (std::size_t n = 0; n < run.time_s.size(); ++n) {
+          out << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g}\n", run.time_s[n], run.road_m[n], body[n],
+                             wheel[n]);
+        }
+      });
+      truth["records"].push_back(file);
+      std::cerr << fmt::format("generate-hidden: {} ({:.0f} s at {:g} Hz)\n", (dir / file).string(),
+                               run.time_s.back(), d.sample_rate_Hz);
+    }
+    io::write_atomically(dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
+      out << "# The truth behind " << d.name
+          << " (ridefit generate-hidden): not to be read by the diagnosis\n"
+          << truth << "\n";
+    });
+  }
+}
+
+}  // namespace
+
+void register_generate_hidden(CLI::App& app) {
+  auto flags = std::make_shared<GenerateHiddenFlags>();
+  CLI::App* command = app.add_subcommand(
+      "generate-hidden",
+      "Simulate measurement records of a model with hidden effects switched on (CSV) and their "
+      "truth files, for testing `ridefit diagnose`");
+  command->add_option("spec", flags->spec_file, "Datasets to generate (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", flags->output_dir, "Output folder")->required();
+  command->add_option("--seed", flags->seed_offset, "Added to every dataset's noise seed")
+      ->capture_default_str();
+  command->callback([flags] { run(*flags); });
+}
+
+}  // namespace ridefit::cli
