@@ -24,6 +24,7 @@ namespace {
 
 using testing::dataset;
 using testing::run_cli;
+using testing::text_of;
 
 // The Passat corner, simulated over 10 s of two roads: fast enough for a CLI test, slow enough
 // (tens of ms an evaluation) to be killed midway.
@@ -289,13 +290,6 @@ INSTANTIATE_TEST_SUITE_P(
                      "}]\nobjective: {metric: seat_acc_wk_rms_m_per_s2}\n",
                  "design corner"}),
     [](const ::testing::TestParamInfo<BadStudy>& p) { return p.param.name; });
-
-std::string text_of(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(OptimiseCli, OutputsNeverReplaceInputsOrEachOther) {
   testing::TempDir dir("ridefit_optimise_cli");

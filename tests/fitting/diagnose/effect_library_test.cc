@@ -16,8 +16,7 @@
 #include "ridefit/fitting/psd_fit.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/iso8608.h"
-#include "ridefit/road/measured_road.h"
-#include "ridefit/simulate/quarter_car_simulation.h"
+#include "support/hidden_effect_record.h"
 #include "support/passat.h"
 
 namespace ridefit::fitting::diagnose {
@@ -89,23 +88,7 @@ TEST(EffectLibrary, EachEffectStartsInsideItsBoundsAndCannotBeAddedTwice) {
 // A 10 s record on a class C road at 50 km/h: rough enough that the bump stop (20 mm) and the
 // damper's knee (0.1 m/s) act, so each parameter moves the spectra.
 PsdMeasurement rough_record(const model::QuarterCar& truth) {
-  road::Iso8608RoadParameters r;
-  r.road_class = road::Iso8608Class::kC;
-  r.random.speed_m_per_s = 50.0 / 3.6;
-  r.random.duration_s = 10.0;
-  r.random.seed = 3;
-  const auto road = road::make_iso8608_road(r);
-  simulate::SimulationOptions options;
-  options.output_rate_Hz = 500.0;
-  const auto run = simulate::simulate(truth, road, options);
-  PsdMeasurement m;
-  m.source = "simulated";
-  m.time_s = run.time_s;
-  m.sample_rate_Hz = 500.0;
-  m.road = std::make_shared<road::MeasuredRoad>(run.time_s, run.road_m);
-  m.body_acc_m_per_s2 = run.body_acc_m_per_s2;
-  m.wheel_acc_m_per_s2 = run.wheel_acc_m_per_s2;
-  return m;
+  return testing::hidden_effect_record(truth, road::Iso8608Class::kC, 3, 10.0, 500.0, 0.0);
 }
 
 class EffectGradient : public ::testing::TestWithParam<std::string> {};

@@ -26,9 +26,10 @@ struct DisagreementOptions {
   int min_region_bins = 2;          // and span at least this many bins
 };
 
-// A band where simulation and measurement differ significantly: contiguous bins where the
-// simulated PSD lies outside the measured PSD's confidence interval on the same side (gaps of
-// one bin bridged), whose mean difference is at least min_region_dB.
+// A band where simulation and measurement differ significantly: contiguous bins where the ratio
+// P_sim/P_meas lies outside the two-sided F(ν, ν) interval on the same side (two Welch estimates
+// with ν degrees of freedom each; gaps of one bin bridged), whose mean difference is at least
+// min_region_dB.
 struct DisagreementRegion {
   std::string channel;
   double low_Hz = 0.0;
@@ -45,7 +46,7 @@ struct ChannelDisagreement {
   std::vector<double> measured_psd, simulated_psd;
   std::vector<double> measured_lower, measured_upper;  // the measured PSD's interval
   std::vector<double> ratio_dB;                        // 10·log10(P_sim / P_meas) per bin
-  std::vector<bool> significant;                       // simulated outside the interval
+  std::vector<bool> significant;                       // ratio outside the F interval
   // The spectral gap: RMS over the band's bins of ratio_dB [dB]; 0 when they agree exactly.
   double gap_dB = 0.0;
   // Peak of each PSD over the band (after 3-bin smoothing so one noisy bin cannot win).
