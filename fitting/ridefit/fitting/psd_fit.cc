@@ -248,15 +248,6 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
   if (fitting && (options.free.empty() || options.free.size() > kMaxFree)) {
     throw InputError(fmt::format("--free: name 1 to {} parameters to fit", kMaxFree));
   }
-  // Known defect: with a blow-off knee on the damper's branch, the Jet tangents through the SDIRK
-  // steps disagree with central differences (damping_Ns_per_m's column by ~70 % on a class A
-  // road), so the Jacobian handed to Ceres would not be exact. Refuse rather than fit wrongly.
-  if (car.parameters().damper_knee_velocity_m_per_s > 0.0) {
-    throw InputError(
-        "the PSD fit does not yet support a damper with a blow-off knee "
-        "(damper_knee_velocity_m_per_s > 0): its exact Jacobian is not right there; remove the "
-        "knee keys to fit the other parameters");
-  }
   std::vector<std::size_t> fields;
   if (fitting) {
     for (const auto& name : options.free) fields.push_back(parameter_index(name));

@@ -12,6 +12,7 @@
 
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/road/road_input.h"
+#include "ridefit/simulate/autodiff_parameters.h"
 
 namespace ridefit::simulate {
 
@@ -46,7 +47,7 @@ std::optional<AccelerationSeries<T>> quarter_car_accelerations(
                                model::QuarterCar::kMaxStates, model::QuarterCar::kMaxStates>;
   const int n = car.state_size();
   const double gamma = 1.0 - std::sqrt(0.5);
-  const model::QuarterCarParameters<AutoDiff> ad_values = values.template cast<AutoDiff>();
+  const model::QuarterCarParameters<AutoDiff> ad_values = autodiff_parameters<AutoDiff>(values, n);
   Vector y = Vector::Zero(n);
   std::vector<T> yt(static_cast<std::size_t>(n), T(0.0));
   AccelerationSeries<T> out;

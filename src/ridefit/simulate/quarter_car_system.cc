@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "ridefit/simulate/autodiff_jacobian.h"
+#include "ridefit/simulate/autodiff_parameters.h"
 
 namespace ridefit::simulate {
 namespace {
@@ -27,7 +28,7 @@ bool QuarterCarSystem::jacobian(double t_s, const double* x, double* jacobian_co
       size(), x,
       [&](const auto* xa, auto* fa) {
         using AutoDiff = std::remove_cvref_t<decltype(*xa)>;
-        car_.derivatives(xa, input, car_.parameters().template cast<AutoDiff>(), fa);
+        car_.derivatives(xa, input, autodiff_parameters<AutoDiff>(car_.parameters(), size()), fa);
       },
       jacobian_column_major);
 }

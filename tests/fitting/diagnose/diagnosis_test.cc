@@ -98,6 +98,10 @@ INSTANTIATE_TEST_SUITE_P(
         HiddenEffect{"damper_asymmetry", slip_baseline(),
                      slip_baseline({{"compression_to_rebound_ratio", 0.4}}),
                      road::Iso8608Class::kC},
+        HiddenEffect{"damper_digressive", slip_baseline(),
+                     slip_baseline({{"damper_knee_velocity_m_per_s", 0.1},
+                                    {"damping_above_knee_Ns_per_m", 300.0}}),
+                     road::Iso8608Class::kD},
         HiddenEffect{
             "bump_stop", slip_baseline(),
             slip_baseline({{"bump_stop_stiffness_N_per_m", 1e5}, {"bump_stop_clearance_m", 0.03}}),

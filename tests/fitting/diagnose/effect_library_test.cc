@@ -44,7 +44,7 @@ TEST(EffectLibrary, HoldsTheIssuesIdsSortedAndNamesThemWhenOneIsUnknown) {
   EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
   for (const char* id :
        {"damper_friction", "top_mount_compliance", "top_mount_amplitude_stiffening", "tyre_damping",
-        "damper_asymmetry", "bump_stop", "tyre_lift_off"}) {
+        "damper_asymmetry", "damper_digressive", "bump_stop", "tyre_lift_off"}) {
     EXPECT_EQ(find_effect(id).id(), id);
     EXPECT_GT(find_effect(id).description().size(), 40u) << id;
   }
@@ -148,7 +148,8 @@ TEST_P(EffectGradient, PsdJacobianMatchesCentralDifferences) {
 INSTANTIATE_TEST_SUITE_P(Library, EffectGradient,
                          ::testing::Values("damper_friction", "top_mount_compliance",
                                            "top_mount_amplitude_stiffening", "tyre_damping",
-                                           "damper_asymmetry", "bump_stop", "tyre_lift_off"));
+                                           "damper_asymmetry", "damper_digressive", "bump_stop",
+                                           "tyre_lift_off"));
 
 }  // namespace
 }  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,39 @@
+// damper_digressive: a blow-off knee in the damper's force over velocity.
+#include <memory>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+class DamperDigressive : public Effect {
+ public:
+  std::string_view id() const override { return "damper_digressive"; }
+  std::string_view description() const override {
+    return "a digressive damper (blow-off valve opening at a knee velocity): less damping on "
+           "rough roads than the linear coefficient predicts";
+  }
+  std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.car.damper_state() == model::DamperState::kStick) {
+      return "the baseline's damper is locked (stick): its valving cannot act";
+    }
+    if (baseline.car.parameters().damper_knee_velocity_m_per_s > 0.0) {
+      return "the baseline's damper already has a knee";
+    }
+    return "";
+  }
+  EffectChange change(const DiagnosisModel& baseline) const override {
+    const double c = baseline.car.parameters().damping_Ns_per_m;
+    return {{{"damper_knee_velocity_m_per_s", 0.1}, {"damping_above_knee_Ns_per_m", 0.5 * c}},
+            std::nullopt,
+            {{"damper_knee_velocity_m_per_s", 0.005, 2.0},
+             {"damping_above_knee_Ns_per_m", 0.02 * c, c}},
+            {}};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_damper_digressive() { return std::make_unique<DamperDigressive>(); }
+
+}  // namespace ridefit::fitting::diagnose
