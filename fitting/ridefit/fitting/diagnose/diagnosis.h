@@ -44,8 +44,10 @@ struct DiagnosisOptions {
   double min_held_out_improvement = 0.3;
   double min_bic_drop = 20.0;
   // A disagreement region left after the last accepted effect counts as unexplained when it is
-  // inside the excitation band (not above it) and its mean size is at least this.
+  // inside the excitation band (not above it), its mean size is at least unexplained_dB and it
+  // spans at least unexplained_width_Hz.
   double unexplained_dB = 1.5;
+  double unexplained_width_Hz = 1.0;
   int max_effects = 2;
   unsigned threads = 0;  // 0 = every core
 };
