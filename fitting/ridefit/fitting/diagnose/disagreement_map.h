@@ -60,7 +60,9 @@ struct ChannelDisagreement {
   double residual_max_autocorrelation = 0.0;
   double residual_whiteness_p = 0.0;
   // Amplitude dependence: the residual RMS where |measured| is in its top third over that
-  // where it is in its bottom third (≫ 1 or ≪ 1: the error depends on amplitude).
+  // where it is in its bottom third. About 1 for an additive error; a pure gain error gives the
+  // ratio of |measured| itself (about 6 for Gaussian samples); far above that, the error grows
+  // faster than the signal (a nonlinearity). 1 when the bottom third has no residual.
   double amplitude_dependence = 0.0;
   // Power above the band over power in the band, measured and simulated.
   double measured_above_band_share = 0.0;
