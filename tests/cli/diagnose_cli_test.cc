@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "ridefit/io/quarter_car_file.h"
@@ -80,6 +81,20 @@ TEST_P(DiagnoseBadInput, ExitTwoWithAClearMessageAndNoOutput) {
     wheel_text += fmt::format("{},{},{}\n", t, h, a);
     roadless_text += fmt::format("{},{},{}\n", t, a, a);
   }
+  // Rig tests: 4 s of a 1 Hz, 3 mm sine on a viscous strut; a 60-sample one; one without force.
+  std::string rig_text = "time[s],displacement[mm],force[N]\n", short_rig_text = rig_text,
+              forceless_text = "time[s],displacement[mm]\n";
+  for (int k = 0; k <= 2000; ++k) {
+    const double t = 0.002 * k, w = 2.0 * std::numbers::pi;
+    const std::string row =
+        fmt::format("{},{},{}\n", t, 3.0 * std::sin(w * t), 900.0 * 0.003 * w * std::cos(w * t));
+    rig_text += row;
+    if (k < 60) short_rig_text += row;
+    if (k < 60) forceless_text += fmt::format("{},{}\n", t, 3.0 * std::sin(w * t));
+  }
+  const std::string rig = dir.write("rig.csv", rig_text);
+  const std::string short_rig = dir.write("short_rig.csv", short_rig_text);
+  const std::string forceless = dir.write("forceless.csv", forceless_text);
   const std::string bare = dir.write("bare.csv", bare_text);
   const std::string wheel_only = dir.write("wheel_only.csv", wheel_text);
   const std::string roadless = dir.write("roadless.csv", roadless_text);
@@ -90,6 +105,9 @@ TEST_P(DiagnoseBadInput, ExitTwoWithAClearMessageAndNoOutput) {
     }
   };
   substitute("{record}", record);
+  substitute("{rig}", rig);
+  substitute("{short_rig}", short_rig);
+  substitute("{forceless}", forceless);
   substitute("{bare}", bare);
   substitute("{wheel_only}", wheel_only);
   substitute("{model}", model);
@@ -118,11 +136,57 @@ INSTANTIATE_TEST_SUITE_P(
         BadDiagnosis{"UnknownFreeParameter", "{record} --free damping", "'damping' is not"},
         BadDiagnosis{"RecordTooShortForItsSegments", "{record} --segment 8",
                      "fewer than two 8 s segments"},
+        BadDiagnosis{"RigWithAnExcitation", "{rig} --excitation {long_road}",
+                     "carry their own excitation"},
+        BadDiagnosis{"RigMixedWithVehicle", "{rig} {record}", "mix strut rig tests"},
+        BadDiagnosis{"RigUnknownFreeParameter", "{rig} --free gas_rate",
+                     "'gas_rate' is not a strut-test parameter"},
+        BadDiagnosis{"RigTooShortToSplit", "{short_rig}", "too few for a loop"},
+        BadDiagnosis{"RigWithoutForce", "{forceless}", "no column 'force'"},
+        BadDiagnosis{"RigUnknownEffect", "{rig} --effects gas_spring", "unknown effect"},
         BadDiagnosis{"ExcitationCountMismatch",
                      "{record} {record} --excitation {long_road} --excitation {long_road} "
                      "--excitation {long_road}",
                      "one for all records or one per record"}),
     [](const ::testing::TestParamInfo<BadDiagnosis>& param_info) { return param_info.param.name; });
+
+TEST(DiagnoseCli, RigRecordsGetTheLoopDiagnosis) {
+  // The shipped hidden Stribeck rig test: the effect is named, its fit recovers the truth
+  // (datasets/hidden/rig_stribeck_truth.yaml: Fs = 90 N, v_s = 4 mm/s), the gap is an NRMSE.
+  testing::TempDir dir("ridefit_diagnose_cli");
+  const std::string out = (dir.path() / "diagnosis").string();
+  const auto run =
+      run_cli("diagnose " + dataset("vehicles/passat_b8_front.yaml") + " " +
+              dataset("hidden/rig_stribeck.csv") + " " + dataset("hidden/rig_stribeck_2.csv") +
+              " --effects friction_velocity_dependence,gas_force,bump_stop --json -o " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto j = json_of(run.output);
+  EXPECT_EQ(j["data"], "strut_loops");
+  ASSERT_EQ(j["named"].size(), 1u) << run.output;
+  EXPECT_EQ(j["named"][0], "friction_velocity_dependence");
+  EXPECT_LT(j["gap_after_nrmse_percent"].get<double>(),
+            0.3 * j["gap_before_nrmse_percent"].get<double>());
+  bool found = false;
+  for (const auto& p : j["final_parameters"]) {
+    if (p["name"] == "static_friction_force_N") {
+      found = true;
+      EXPECT_NEAR(p["value"].get<double>(), 90.0, 9.0);
+    }
+  }
+  EXPECT_TRUE(found);
+  // bump_stop does not apply to loops and says why.
+  bool skipped = false;
+  for (const auto& e : j["rounds"][0]["effects"]) {
+    if (e["id"] == "bump_stop") skipped = e.contains("skipped");
+  }
+  EXPECT_TRUE(skipped);
+  const std::string report = testing::text_of(out + "/report.md");
+  EXPECT_NE(report.find("NRMSE"), std::string::npos);
+  // model.yaml carries the Stribeck keys and loads as a model.
+  const auto written = io::load_quarter_car(dir.path() / "diagnosis" / "model.yaml");
+  EXPECT_NEAR(written.parameters.static_friction_force_N, 90.0, 9.0);
+  EXPECT_GT(written.parameters.stribeck_velocity_m_per_s, 0.0);
+}
 
 TEST(DiagnoseCli, OutputFolderMayNotBeAnInput) {
   testing::TempDir dir("ridefit_diagnose_cli");

@@ -2,9 +2,12 @@
 // the effect actually present in the truth, and bad specs (exit 2, nothing written).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 
+#include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/fitting/psd_fit.h"
 #include "support/cli_runner.h"
 #include "support/passat.h"
@@ -52,6 +55,50 @@ TEST(GenerateHiddenCli, WritesRecordsAndTruthDeterministically) {
             testing::text_of((std::filesystem::path(c) / "lift.csv").string()));
 }
 
+std::string rig_spec(
+    const std::string& rig = "{amplitudes_mm: [3, 1.5], frequencies_Hz: [0.7, 2.3]}",
+    const std::string& set = "{gas_stiffness_N_per_m: 15000}") {
+  return "datasets:\n  - name: gas\n    kind: strut_rig\n    model: " +
+         dataset("vehicles/passat_b8_front.yaml") + "\n    set: " + set +
+         "\n    effects: [gas_force]\n    rig: " + rig +
+         "\n    duration_s: 4\n    sample_rate_Hz: 500\n    seed: 9\n";
+}
+
+TEST(GenerateHiddenCli, WritesStrutRigRecordsWithTheTruthsForce) {
+  testing::TempDir dir("ridefit_hidden_cli");
+  const auto file = dir.write("spec.yaml", rig_spec());
+  const auto a = (dir.path() / "a").string(), b = (dir.path() / "b").string();
+  ASSERT_EQ(run_cli("generate-hidden " + file + " -o " + a).exit_code, 0);
+  ASSERT_EQ(run_cli("generate-hidden " + file + " -o " + b).exit_code, 0);
+  for (const char* name : {"gas.csv", "gas_2.csv", "gas_truth.yaml"}) {
+    EXPECT_EQ(testing::text_of((std::filesystem::path(a) / name).string()),
+              testing::text_of((std::filesystem::path(b) / name).string()))
+        << name << " differs between two runs";
+  }
+  const auto r1 = fitting::load_hysteresis_record(std::filesystem::path(a) / "gas.csv");
+  const auto r2 = fitting::load_hysteresis_record(std::filesystem::path(a) / "gas_2.csv");
+  ASSERT_EQ(r1.time_s.size(), 2001u);
+  EXPECT_EQ(r1.displacement_m.front(), 0.0);  // record 1 starts in sine phase
+  EXPECT_NE(r2.displacement_m.front(), 0.0);  // record 2 has random phases
+  // The gas rate is in the force: without it (same seed, same noise) the force differs by
+  // exactly k_g·x, the gas spring being in parallel with the rest of the strut.
+  const auto no_gas = dir.write("no_gas.yaml", rig_spec("{amplitudes_mm: [3, 1.5], frequencies_Hz: "
+                                                        "[0.7, 2.3]}",
+                                                        "{gas_stiffness_N_per_m: 0}"));
+  const auto c = (dir.path() / "c").string();
+  ASSERT_EQ(run_cli("generate-hidden " + no_gas + " -o " + c).exit_code, 0);
+  const auto r0 = fitting::load_hysteresis_record(std::filesystem::path(c) / "gas.csv");
+  double worst = 0.0;
+  for (std::size_t k = 0; k < r1.force_N.size(); ++k) {
+    worst =
+        std::max(worst, std::abs(r1.force_N[k] - r0.force_N[k] - 15000.0 * r1.displacement_m[k]));
+  }
+  EXPECT_LT(worst, 1e-2);  // the CSV's 6 significant digits
+  const std::string truth =
+      testing::text_of((std::filesystem::path(a) / "gas_truth.yaml").string());
+  EXPECT_NE(truth.find("gas_stiffness_N_per_m: 15000"), std::string::npos) << truth;
+}
+
 struct BadSpec {
   std::string name;
   std::string text;
@@ -83,7 +130,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadSpec{"NegativeNoise", spec("    sensor: {noise: -0.1}\n"), "noise"},
         BadSpec{"BandAboveNyquist", spec("    sensor: {low_pass_Hz: 150}\n"), "Nyquist"},
         BadSpec{"InvertedBand", spec("    sensor: {high_pass_Hz: 90, low_pass_Hz: 50}\n"),
-                "high_pass_Hz < low_pass_Hz"}),
+                "high_pass_Hz < low_pass_Hz"},
+        BadSpec{"RigAmplitudesWithoutFrequencies",
+                rig_spec("{amplitudes_mm: [3, 1.5], frequencies_Hz: [0.7]}"),
+                "as many amplitudes_mm as frequencies_Hz"},
+        BadSpec{"RigZeroFrequency", rig_spec("{amplitudes_mm: [3], frequencies_Hz: [0]}"),
+                "frequencies must be finite and > 0 Hz"},
+        BadSpec{"RigUnknownStrutKey",
+                rig_spec("{amplitudes_mm: [3], frequencies_Hz: [1]}", "{gas_rate: 1}"),
+                "'gas_rate' is not a strut-test parameter"},
+        BadSpec{"RigWithASensor", rig_spec() + "    sensor: {noise: 0.01}\n",
+                "takes noise_N, not a sensor"}),
     [](const ::testing::TestParamInfo<BadSpec>& param_info) { return param_info.param.name; });
 
 }  // namespace

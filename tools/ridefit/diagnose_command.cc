@@ -1,12 +1,13 @@
-// ridefit diagnose MODEL.yaml MEAS.csv [MEAS2.csv] [--excitation EXC.yaml]... [--effects
-// all|id,...]
+// ridefit diagnose MODEL.yaml MEAS.csv... [--excitation EXC.yaml]... [--effects all|id,...]
 //                  [-o DIR] [--free k,...] [--band LOW,HIGH] [--segment S] [--threads N] [--json]
-// Finds where the model and the measured spectra disagree, which effect of the library explains
-// it, adds it, and shows the gap before and after (fitting/diagnose/diagnosis.h).
+// Finds where the model and the measurement disagree, which effect of the library explains it,
+// adds it, and shows the gap before and after: vehicle spectra here (fitting/diagnose/
+// diagnosis.h), strut rig loops in diagnose_loops_command.cc (loop_diagnosis.h).
 #include <fmt/core.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "command_options.h"
+#include "diagnose_common.h"
 #include "ridefit/fitting/diagnose/diagnosis.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
@@ -25,25 +27,6 @@
 #include "subcommands.h"
 
 namespace ridefit::cli {
-namespace {
-
-namespace dx = fitting::diagnose;
-
-struct DiagnoseFlags {
-  std::string model_file;
-  std::vector<std::string> records;
-  std::vector<std::string> excitations;
-  std::string effects = "all";
-  std::string output_dir = "diagnosis";
-  std::vector<std::string> free;
-  std::vector<double> band_Hz = {0.5, 30.0};
-  double segment_s = 4.0;
-  double screening_step_s = 2.5e-3;
-  double final_step_s = 1.25e-3;
-  unsigned threads = 0;
-  bool json = false;
-  bool quiet = false;
-};
 
 std::vector<std::string> effect_ids(const std::string& text) {
   if (text == "all") return {};
@@ -63,6 +46,106 @@ std::vector<std::string> effect_ids(const std::string& text) {
   }
   return ids;
 }
+
+std::string se_text(const std::optional<double>& se) {
+  return se ? fmt::format("{:.3g}", *se) : std::string("—");
+}
+
+void write_parameters(std::ostream& out, const std::vector<dx::FittedValue>& values) {
+  out << "| parameter | value | standard error |\n| --- | --- | --- |\n";
+  for (const auto& p : values) {
+    out << fmt::format("| {} | {:.6g} | {} |\n", p.name, p.value, se_text(p.standard_error));
+  }
+  out << "\n";
+}
+
+void write_rounds(std::ostream& out, const dx::DiagnosisResult& r, const std::string& cost_words,
+                  const std::string& gap_unit) {
+  for (std::size_t k = 0; k < r.rounds.size(); ++k) {
+    out << fmt::format("## Round {}: effects tried\n\n", k + 1);
+    out << fmt::format(
+        "Held-out improvement: how much the held-out cost ({}) falls; ΔBIC on the training data "
+        "(negative is better; extra parameters pay ln n each).\n\n| rank | effect | free | "
+        "held-out improvement | ΔBIC | gap [{}] | significant |\n| --- | --- | --- | --- | --- | "
+        "--- | --- |\n",
+        cost_words, gap_unit);
+    int rank = 0;
+    for (const auto& t : r.rounds[k].trials) {
+      if (!t.skipped.empty() || !t.failed.empty()) continue;
+      out << fmt::format("| {} | `{}` | {} | {:+.1f} % | {:+.1f} | {:.2f} | {} |\n", ++rank, t.id,
+                         t.free_parameters, 100.0 * t.held_out_improvement, t.bic_change,
+                         t.held_out_gap, t.significant ? "yes" : "no");
+    }
+    out << "\n";
+    for (const auto& t : r.rounds[k].trials) {
+      if (!t.failed.empty()) out << fmt::format("- `{}` failed: {}\n", t.id, t.failed);
+      if (!t.skipped.empty()) out << fmt::format("- `{}` skipped: {}\n", t.id, t.skipped);
+    }
+    out << "\n"
+        << (r.rounds[k].accepted.empty()
+                ? std::string("No effect is significant.")
+                : fmt::format("Accepted: `{}` — {}.", r.rounds[k].accepted,
+                              dx::find_effect(r.rounds[k].accepted).description()))
+        << "\n\n";
+  }
+}
+
+nlohmann::json values_json(const std::vector<dx::FittedValue>& values) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& v : values) {
+    j.push_back({{"name", v.name},
+                 {"value", v.value},
+                 {"standard_error",
+                  v.standard_error ? nlohmann::json(*v.standard_error) : nlohmann::json()}});
+  }
+  return j;
+}
+
+nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string& gap_key) {
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const auto& round : result.rounds) {
+    nlohmann::json ranked = nlohmann::json::array();
+    for (const auto& t : round.trials) {
+      nlohmann::json e = {{"id", t.id}};
+      if (!t.skipped.empty()) {
+        e["skipped"] = t.skipped;
+      } else if (!t.failed.empty()) {
+        e["failed"] = t.failed;
+      } else {
+        e["held_out_improvement"] = t.held_out_improvement;
+        e["bic_change"] = t.bic_change;
+        e["held_out_cost"] = t.held_out_cost;
+        e[gap_key] = t.held_out_gap;
+        e["significant"] = t.significant;
+        e["parameters"] = values_json(t.parameters);
+      }
+      ranked.push_back(e);
+    }
+    rounds.push_back({{"accepted", round.accepted}, {"effects", ranked}});
+  }
+  return rounds;
+}
+
+void check_output_is_not_an_input(const DiagnoseFlags& flags) {
+  std::vector<std::filesystem::path> inputs{flags.model_file};
+  for (const auto& f : flags.records) inputs.push_back(f);
+  for (const auto& f : flags.excitations) inputs.push_back(f);
+  for (const auto& input : inputs) {
+    std::error_code ec;
+    if (std::filesystem::equivalent(input, flags.output_dir, ec)) {
+      throw InputError(fmt::format("-o {}: that is an input", flags.output_dir));
+    }
+  }
+}
+
+bool is_rig_record(const std::filesystem::path& csv_file) {
+  std::ifstream in(csv_file);
+  std::string header;
+  std::getline(in, header);
+  return header.find("displacement") != std::string::npos;
+}
+
+namespace {
 
 // The excitation must cover the record and not be much longer (a road for another record).
 void check_excitation_length(const fitting::PsdMeasurement& m, const std::string& excitation) {
@@ -108,10 +191,6 @@ std::vector<std::pair<std::string, std::string>> changed_keys(const model::Quart
   return values;
 }
 
-std::string se_text(const std::optional<double>& se) {
-  return se ? fmt::format("{:.3g}", *se) : std::string("—");
-}
-
 void write_regions(std::ostream& out, const std::vector<dx::DisagreementRegion>& regions) {
   if (regions.empty()) {
     out << "No significant disagreement.\n\n";
@@ -148,50 +227,17 @@ void write_report(std::ostream& out, const DiagnoseFlags& flags, const dx::Diagn
       data.held_out.source, data.held_out.time_s.back() - data.held_out.time_s.front(),
       flags.band_Hz[0], flags.band_Hz[1], flags.segment_s);
   out << "**Verdict: " << r.verdict << ".**\n\n";
-  out << fmt::format("Gap before {:.2f} dB, after {:.2f} dB ({:.0f} % smaller).\n\n",
-                     r.before.gap_dB, r.after.gap_dB,
-                     r.before.gap_dB > 0 ? 100.0 * (1.0 - r.after.gap_dB / r.before.gap_dB) : 0.0);
-  out << "## Before: the baseline, its free parameters fitted\n\n| parameter | value | standard "
-         "error |\n| --- | --- | --- |\n";
-  for (const auto& p : r.baseline_parameters) {
-    out << fmt::format("| {} | {:.6g} | {} |\n", p.name, p.value, se_text(p.standard_error));
-  }
-  out << "\n";
+  out << fmt::format("Gap before {:.2f} dB, after {:.2f} dB ({:.0f} % smaller).\n\n", r.gap_before,
+                     r.gap_after,
+                     r.gap_before > 0 ? 100.0 * (1.0 - r.gap_after / r.gap_before) : 0.0);
+  out << "## Before: the baseline, its free parameters fitted\n\n";
+  write_parameters(out, r.baseline_parameters);
   write_channels(out, r.before);
   write_regions(out, r.before.regions);
-  for (std::size_t k = 0; k < r.rounds.size(); ++k) {
-    out << fmt::format("## Round {}: effects tried\n\n", k + 1);
-    out << "Held-out improvement: how much the held-out cost (½·Σ of squared log-PSD residuals) "
-           "falls; ΔBIC on the training data (negative is better; extra parameters pay ln n "
-           "each).\n\n| rank | effect | free | held-out improvement | ΔBIC | gap [dB] | "
-           "significant "
-           "|\n| --- | --- | --- | --- | --- | --- | --- |\n";
-    int rank = 0;
-    for (const auto& t : r.rounds[k].trials) {
-      if (!t.skipped.empty() || !t.failed.empty()) continue;
-      out << fmt::format("| {} | `{}` | {} | {:+.1f} % | {:+.1f} | {:.2f} | {} |\n", ++rank, t.id,
-                         t.free_parameters, 100.0 * t.held_out_improvement, t.bic_change,
-                         t.held_out_gap_dB, t.significant ? "yes" : "no");
-    }
-    out << "\n";
-    for (const auto& t : r.rounds[k].trials) {
-      if (!t.failed.empty()) out << fmt::format("- `{}` failed: {}\n", t.id, t.failed);
-      if (!t.skipped.empty()) out << fmt::format("- `{}` skipped: {}\n", t.id, t.skipped);
-    }
-    out << "\n"
-        << (r.rounds[k].accepted.empty()
-                ? std::string("No effect is significant.")
-                : fmt::format("Accepted: `{}` — {}.", r.rounds[k].accepted,
-                              dx::find_effect(r.rounds[k].accepted).description()))
-        << "\n\n";
-  }
+  write_rounds(out, r, "½·Σ of squared log-PSD residuals", "dB");
   if (!r.named.empty()) {
-    out << "## After: the model with the named effect(s), refitted\n\n| parameter | value | "
-           "standard error |\n| --- | --- | --- |\n";
-    for (const auto& p : r.final_parameters) {
-      out << fmt::format("| {} | {:.6g} | {} |\n", p.name, p.value, se_text(p.standard_error));
-    }
-    out << "\n";
+    out << "## After: the model with the named effect(s), refitted\n\n";
+    write_parameters(out, r.final_parameters);
     write_channels(out, r.after);
     write_regions(out, r.after.regions);
     out << "The model with the effect added: `model.yaml` (ready for simulate, fit and "
@@ -213,17 +259,6 @@ nlohmann::json regions_json(const std::vector<dx::DisagreementRegion>& regions) 
                  {"measured_peak_Hz", r.measured_peak_Hz},
                  {"simulated_peak_Hz", r.simulated_peak_Hz},
                  {"above_band", r.above_band}});
-  }
-  return j;
-}
-
-nlohmann::json values_json(const std::vector<dx::FittedValue>& values) {
-  nlohmann::json j = nlohmann::json::array();
-  for (const auto& v : values) {
-    j.push_back({{"name", v.name},
-                 {"value", v.value},
-                 {"standard_error",
-                  v.standard_error ? nlohmann::json(*v.standard_error) : nlohmann::json()}});
   }
   return j;
 }
@@ -280,6 +315,17 @@ void draw_spectra(const dx::DiagnosisResult& r, const std::filesystem::path& pat
 }
 
 void run(const DiagnoseFlags& flags) {
+  std::size_t rig_records = 0;
+  for (const auto& file : flags.records) rig_records += is_rig_record(file) ? 1 : 0;
+  if (rig_records > 0 && rig_records == flags.records.size()) {
+    run_diagnose_loops(flags);
+    return;
+  }
+  if (rig_records > 0) {
+    throw InputError(
+        "the records mix strut rig tests (time, displacement, force) with vehicle measurements "
+        "(time, road or --excitation, body_acc and/or wheel_acc); diagnose one kind at a time");
+  }
   if (flags.records.empty() || flags.records.size() > 2) {
     throw InputError(
         "give one record (its first half is fitted, its second half judges) or two (the first "
@@ -311,16 +357,8 @@ void run(const DiagnoseFlags& flags) {
   options.map.segment_s = flags.segment_s;
   options.threads = flags.threads;
 
-  std::vector<std::filesystem::path> inputs{flags.model_file};
-  for (const auto& f : flags.records) inputs.push_back(f);
-  for (const auto& f : flags.excitations) inputs.push_back(f);
+  check_output_is_not_an_input(flags);
   const std::filesystem::path dir = flags.output_dir;
-  for (const auto& input : inputs) {
-    std::error_code ec;
-    if (std::filesystem::equivalent(input, dir, ec)) {
-      throw InputError(fmt::format("-o {}: that is an input", dir.string()));
-    }
-  }
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::PsdMeasurement> records;
   for (std::size_t i = 0; i < flags.records.size(); ++i) {
@@ -366,7 +404,7 @@ void run(const DiagnoseFlags& flags) {
   if (figure) draw_spectra(result, dir / "spectra.png");
   const auto values = changed_keys(model_file.make_model(), result.final_model.car);
   io::write_model_with_values(flags.model_file, values, dir / "model.yaml",
-                              fmt::format("# {} by ridefit diagnose from {}: {}", flags.model_file,
+                              fmt::format("{} by ridefit diagnose from {}: {}", flags.model_file,
                                           flags.records.front(), result.verdict));
   io::write_atomically(dir / "report.md",
                        [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
@@ -382,29 +420,9 @@ void run(const DiagnoseFlags& flags) {
                         {"unexplained", regions_json(result.unexplained)},
                         {"baseline_parameters", values_json(result.baseline_parameters)},
                         {"final_parameters", values_json(result.final_parameters)},
-                        {"rounds", nlohmann::json::array()},
                         {"report", (dir / "report.md").string()},
                         {"model", (dir / "model.yaml").string()}};
-    for (const auto& round : result.rounds) {
-      nlohmann::json ranked = nlohmann::json::array();
-      for (const auto& t : round.trials) {
-        nlohmann::json e = {{"id", t.id}};
-        if (!t.skipped.empty()) {
-          e["skipped"] = t.skipped;
-        } else if (!t.failed.empty()) {
-          e["failed"] = t.failed;
-        } else {
-          e["held_out_improvement"] = t.held_out_improvement;
-          e["bic_change"] = t.bic_change;
-          e["held_out_cost"] = t.held_out_cost;
-          e["gap_dB"] = t.held_out_gap_dB;
-          e["significant"] = t.significant;
-          e["parameters"] = values_json(t.parameters);
-        }
-        ranked.push_back(e);
-      }
-      j["rounds"].push_back({{"accepted", round.accepted}, {"effects", ranked}});
-    }
+    j["rounds"] = rounds_json(result, "gap_dB");
     std::cout << j.dump(2) << "\n";
     return;
   }
@@ -427,15 +445,18 @@ void register_diagnose(CLI::App& app) {
   auto flags = std::make_shared<DiagnoseFlags>();
   CLI::App* command = app.add_subcommand(
       "diagnose",
-      "Find where a quarter-car model and measured acceleration spectra disagree, name the "
-      "missing physical effect from a library, add it, refit, and show the gap before and after");
+      "Find where a quarter-car model and measured acceleration spectra (or strut rig loops) "
+      "disagree, name the missing physical effect from a library, add it, refit, and show the gap "
+      "before and after");
   command->add_option("model", flags->model_file, "Quarter-car model (YAML), the baseline")
       ->required()
       ->check(CLI::ExistingFile);
   command
       ->add_option("records", flags->records,
-                   "One or two measurements (CSV: time, road unless --excitation, body_acc "
-                   "and/or wheel_acc); the first is fitted, the second (or the second half) judges")
+                   "Vehicle: one or two measurements (CSV: time, road unless --excitation, "
+                   "body_acc and/or wheel_acc); the first is fitted, the second (or the second "
+                   "half) judges. Rig: strut tests (CSV: time, displacement, force); the 1st, "
+                   "3rd, ... are fitted, the 2nd, 4th, ... judge (one: its halves)")
       ->required()
       ->check(CLI::ExistingFile);
   command
@@ -452,7 +473,8 @@ void register_diagnose(CLI::App& app) {
   command
       ->add_option("--free", flags->free,
                    "Baseline parameters every fit frees (default: damping_Ns_per_m, and "
-                   "coulomb_force_N with Dahl friction; sprung_mass_kg with a locked damper)")
+                   "coulomb_force_N with Dahl friction; sprung_mass_kg with a locked damper; "
+                   "rig loops: damping_Ns_per_m, force_offset_N, coulomb_force_N)")
       ->delimiter(',');
   command->add_option("--band", flags->band_Hz, "Compared band LOW,HIGH [Hz]")
       ->delimiter(',')

@@ -56,17 +56,7 @@ struct FitHysteresisFlags {
 
 model::StrutTestParameters<double> start_from(const io::QuarterCarFile& file,
                                               const std::vector<std::string>& starts) {
-  const auto& q = file.parameters;
-  model::StrutTestParameters<double> p{q.dahl_sigma0_N_per_m,
-                                       q.coulomb_force_N,
-                                       q.dahl_exponent,
-                                       q.top_mount_stiffness_N_per_m,
-                                       q.damping_Ns_per_m,
-                                       0.0,
-                                       0.0,
-                                       0.0,
-                                       q.static_friction_force_N,
-                                       q.stribeck_velocity_m_per_s};
+  model::StrutTestParameters<double> p = fitting::strut_on_rig(file.parameters);
   for (const auto& [name, value] : parse_overrides(starts)) {
     try {
       fitting::strut_parameter(p, fitting::strut_parameter_index(name)) = value;

@@ -18,12 +18,24 @@
 //       sensor: {noise: 0.005, high_pass_Hz: 0.1, low_pass_Hz: 100,
 //                mount: {channel: body_acc, frequency_Hz: 12, damping_ratio: 0.05}}
 //       seed: 11                        # noise seed (default 1)
+//     - name: rig_gas_force                      # a strut rig test instead (kind: strut_rig)
+//       kind: strut_rig
+//       model: ../vehicles/passat_b8_front.yaml  # its strut, put on the rig (strut_on_rig)
+//       set: {gas_stiffness_N_per_m: 15000}      # strut-test keys (fitting/strut_parameters.h)
+//       effects: [gas_force]
+//       rig: {amplitudes_mm: [3, 1.5, 0.8], frequencies_Hz: [0.7, 2.3, 6.1]}  # a multisine;
+//                                       # record k >= 2 takes seeded random phases
+//       duration_s: 30                  # required
+//       sample_rate_Hz: 1000            # default 1000
+//       noise_N: 0.6                    # Gaussian load-cell noise (default 0.6 N)
 #include <fmt/core.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <set>
 
@@ -31,12 +43,14 @@
 
 #include "command_options.h"
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
+#include "ridefit/simulate/strut_test_response.h"
 #include "ridefit/study/sensor_model.h"
 #include "subcommands.h"
 
@@ -51,6 +65,9 @@ struct GenerateHiddenFlags {
 
 struct Dataset {
   std::string name;
+  bool strut_rig = false;
+  std::vector<double> rig_amplitudes_m, rig_frequencies_Hz;
+  double noise_N = 0.6;
   std::filesystem::path model;
   std::string damper_state;
   std::map<std::string, double> set;
@@ -70,8 +87,9 @@ Dataset read_dataset(const io::YamlMap& d) {
   if (out.name.empty() || out.name.find_first_of("/\\ ") != std::string::npos) {
     throw InputError(fmt::format("{}: a file stem without spaces or slashes", d.locate("name")));
   }
+  out.strut_rig = d.has("kind") && d.choice("kind", {"vehicle", "strut_rig"}) == "strut_rig";
   out.model = d.file("model");
-  out.damper_state = d.text_or("damper_state", "");
+  out.damper_state = out.strut_rig ? "" : d.text_or("damper_state", "");
   if (d.has("set")) {
     const io::YamlMap set = d.map("set");
     for (const auto& key : set.keys()) out.set[key] = set.number(key);
@@ -90,14 +108,39 @@ Dataset read_dataset(const io::YamlMap& d) {
       out.effects.push_back(id);
     }
   }
-  out.excitation = d.file("excitation");
-  out.duration_s = d.has("duration_s") ? d.positive("duration_s") : 0.0;
-  out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 500.0;
+  if (out.strut_rig) {
+    const io::YamlMap rig = d.map("rig");
+    for (double a : rig.numbers("amplitudes_mm")) out.rig_amplitudes_m.push_back(1e-3 * a);
+    out.rig_frequencies_Hz = rig.numbers("frequencies_Hz");
+    if (out.rig_amplitudes_m.empty() ||
+        out.rig_amplitudes_m.size() != out.rig_frequencies_Hz.size()) {
+      throw InputError(fmt::format("{}: give as many amplitudes_mm as frequencies_Hz, at least one",
+                                   d.locate("rig")));
+    }
+    for (double f : out.rig_frequencies_Hz) {
+      if (!(f > 0.0) || !std::isfinite(f)) {
+        throw InputError(
+            fmt::format("{}: frequencies must be finite and > 0 Hz", rig.locate("frequencies_Hz")));
+      }
+    }
+    rig.finish();
+    out.duration_s = d.positive("duration_s");
+    out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 1000.0;
+    out.noise_N = d.has("noise_N") ? d.non_negative("noise_N") : 0.6;
+  } else {
+    out.excitation = d.file("excitation");
+    out.duration_s = d.has("duration_s") ? d.positive("duration_s") : 0.0;
+    out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 500.0;
+  }
   out.records = static_cast<int>(d.has("records") ? d.integer("records") : 2);
   if (out.records < 1 || out.records > 20) {
     throw InputError(fmt::format("{} is {}, expected 1 to 20", d.locate("records"), out.records));
   }
   out.seed = d.integer_or("seed", 1);
+  if (d.has("sensor") && out.strut_rig) {
+    throw InputError(
+        fmt::format("{}: a strut rig dataset takes noise_N, not a sensor", d.locate("sensor")));
+  }
   if (d.has("sensor")) {
     const io::YamlMap s = d.map("sensor");
     out.sensor.noise_fraction = s.has("noise") ? s.non_negative_up_to("noise", 1.0) : 0.005;
@@ -135,6 +178,66 @@ std::unique_ptr<road::RoadInput> excitation_for(const Dataset& d, int record,
   return road;
 }
 
+// A strut rig dataset: each record a multisine displacement (record 1 in sine phase, record
+// k >= 2 with seeded random phases), the strut-test force at the truth plus Gaussian noise.
+void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double>& strut,
+                       const std::filesystem::path& dir, long seed_offset) {
+  YAML::Node truth;
+  truth["dataset"] = d.name;
+  truth["kind"] = "strut_rig";
+  truth["model"] = std::filesystem::relative(d.model, dir).string();
+  for (const auto& [key, value] : d.set) truth["set"][key] = value;
+  truth["effects"] = YAML::Node(YAML::NodeType::Sequence);
+  for (const auto& id : d.effects) truth["effects"].push_back(id);
+  auto copy = strut;
+  for (std::size_t p = 0; p < fitting::kStrutParameters.size(); ++p) {
+    truth["strut"][std::string(fitting::kStrutParameters[p].name)] =
+        fitting::strut_parameter(copy, p);
+  }
+  truth["sample_rate_Hz"] = d.sample_rate_Hz;
+  truth["noise_N"] = d.noise_N;
+  const auto samples = static_cast<std::size_t>(std::floor(d.duration_s * d.sample_rate_Hz)) + 1;
+  for (int k = 1; k <= d.records; ++k) {
+    std::mt19937_64 rng(static_cast<unsigned long>(d.seed + seed_offset) * 1000u +
+                        static_cast<unsigned long>(k));
+    std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi);
+    std::vector<double> phases(d.rig_amplitudes_m.size(), 0.0);
+    if (k > 1) {
+      for (double& p : phases) p = phase(rng);
+    }
+    std::vector<double> t(samples), x(samples, 0.0);
+    for (std::size_t n = 0; n < samples; ++n) {
+      t[n] = static_cast<double>(n) / d.sample_rate_Hz;
+      for (std::size_t j = 0; j < phases.size(); ++j) {
+        x[n] += d.rig_amplitudes_m[j] *
+                std::sin(2.0 * std::numbers::pi * d.rig_frequencies_Hz[j] * t[n] + phases[j]);
+      }
+    }
+    const auto force = simulate::strut_test_force<double>(t, x, strut, strut);
+    if (!force) {
+      throw RunError(
+          fmt::format("dataset {}: the strut model cannot be solved at its truth", d.name));
+    }
+    std::normal_distribution<double> noise(0.0, d.noise_N);
+    const std::string file = k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k);
+    io::write_atomically(dir / file, [&](std::ostream& out) {
+      out << "time[s],displacement[mm],force[N]\n";
+      for (std::size_t n = 0; n < samples; ++n) {
+        out << fmt::format("{:.6g},{:.6g},{:.6g}\n", t[n], 1e3 * x[n],
+                           (*force)[n] + (d.noise_N > 0.0 ? noise(rng) : 0.0));
+      }
+    });
+    truth["records"].push_back(file);
+    std::cerr << fmt::format("generate-hidden: {} ({:.0f} s at {:g} Hz)\n", (dir / file).string(),
+                             t.back(), d.sample_rate_Hz);
+  }
+  io::write_atomically(dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
+    out << "# The truth behind " << d.name
+        << " (ridefit generate-hidden): not to be read by the diagnosis\n"
+        << truth << "\n";
+  });
+}
+
 void run(const GenerateHiddenFlags& flags) {
   const io::YamlMap spec = io::YamlMap::load(flags.spec_file);
   std::vector<Dataset> datasets;
@@ -143,8 +246,25 @@ void run(const GenerateHiddenFlags& flags) {
   if (datasets.empty()) throw InputError(fmt::format("{}: no datasets", flags.spec_file));
   // Every model and excitation is checked before anything is simulated or written.
   std::vector<model::QuarterCar> truths;
+  std::vector<model::StrutTestParameters<double>> struts;
   for (const auto& d : datasets) {
+    if (d.strut_rig) {
+      const io::QuarterCarFile file = io::load_quarter_car(d.model);
+      model::StrutTestParameters<double> strut = fitting::strut_on_rig(file.make_model());
+      for (const auto& [key, value] : d.set) {
+        try {
+          fitting::strut_parameter(strut, fitting::strut_parameter_index(key)) = value;
+        } catch (const InputError& e) {
+          throw InputError(
+              fmt::format("{}: dataset {}: set: {}", flags.spec_file, d.name, e.what()));
+        }
+      }
+      truths.push_back(file.make_model());
+      struts.push_back(strut);
+      continue;
+    }
     truths.push_back(io::load_quarter_car(d.model, d.set, d.damper_state).make_model());
+    struts.emplace_back();
     road::load_excitation(d.excitation);
     study::SensorModel check = d.sensor;
     std::mt19937_64 rng(0);
@@ -154,6 +274,10 @@ void run(const GenerateHiddenFlags& flags) {
   const std::filesystem::path dir = flags.output_dir;
   for (std::size_t i = 0; i < datasets.size(); ++i) {
     const Dataset& d = datasets[i];
+    if (d.strut_rig) {
+      write_rig_dataset(d, struts[i], dir, flags.seed_offset);
+      continue;
+    }
     YAML::Node truth;
     truth["dataset"] = d.name;
     truth["model"] = std::filesystem::relative(d.model, dir).string();

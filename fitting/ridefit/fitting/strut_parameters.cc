@@ -16,4 +16,23 @@ std::size_t strut_parameter_index(std::string_view name) {
       fmt::format("'{}' is not a strut-test parameter; the parameters are: {}", name, names));
 }
 
+model::StrutTestParameters<double> strut_on_rig(const model::QuarterCarParameters<double>& q) {
+  return {q.dahl_sigma0_N_per_m,
+          q.coulomb_force_N,
+          q.dahl_exponent,
+          q.top_mount_stiffness_N_per_m,
+          q.damping_Ns_per_m,
+          0.0,
+          0.0,
+          0.0,
+          q.static_friction_force_N,
+          q.stribeck_velocity_m_per_s};
+}
+
+model::StrutTestParameters<double> strut_on_rig(const model::QuarterCar& car) {
+  model::StrutTestParameters<double> strut = strut_on_rig(car.parameters());
+  if (car.damper_state() == model::DamperState::kSlip) strut.coulomb_force_N = 0.0;
+  return strut;
+}
+
 }  // namespace ridefit::fitting

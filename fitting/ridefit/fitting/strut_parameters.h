@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "ridefit/model/quarter_car.h"
 #include "ridefit/model/strut_test.h"
 
 namespace ridefit::fitting {
@@ -33,6 +34,13 @@ inline constexpr std::array<StrutParameterInfo, 10> kStrutParameters{{
     {"static_friction_force_N", 0.0, 1e4, true},
     {"stribeck_velocity_m_per_s", 1e-5, 10.0, true},
 }};
+
+// The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas
+// force and no load-cell offset (rig-only, zero until fitted).
+model::StrutTestParameters<double> strut_on_rig(const model::QuarterCarParameters<double>& q);
+// The same for a model with its topology: a slip model has no Dahl element, so none on the rig
+// either (its coulomb_force_N, if any, is unused on the road too).
+model::StrutTestParameters<double> strut_on_rig(const model::QuarterCar& car);
 
 // Index into kStrutParameters; InputError naming the accepted names for an unknown one.
 std::size_t strut_parameter_index(std::string_view name);

@@ -1,6 +1,6 @@
 // The diagnosis' effect library: its ids, each effect's change (start inside its bounds, applies
-// once), and the PSD fit's exact Jacobian with each effect's parameters free against central
-// differences.
+// once), and the exact Jacobians with each effect's parameters free against central differences:
+// the PSD fit's for vehicle effects, the hysteresis fit's for the effects that apply to loops.
 #include "ridefit/fitting/diagnose/effect.h"
 
 #include <gtest/gtest.h>
@@ -10,10 +10,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
+#include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/psd_fit.h"
+#include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/iso8608.h"
 #include "support/hidden_effect_record.h"
@@ -38,13 +41,41 @@ DiagnosisModel rigid_passat() {
   return {model::QuarterCar(model::DamperState::kSlip, p)};
 }
 
+// The Passat strut on the rig: with Dahl friction (for friction_velocity_dependence and
+// gas_force), without (damper_friction), or with a rigid top mount (top_mount_compliance).
+DiagnosisModel rig_passat(double coulomb_force_N = 60.0, double top_mount_N_per_m = 488000.0) {
+  DiagnosisModel m;
+  m.kind = DataKind::kStrutLoops;
+  m.strut = strut_on_rig(testing::passat_corner().parameters);
+  m.strut.coulomb_force_N = coulomb_force_N;
+  m.strut.top_mount_stiffness_N_per_m = top_mount_N_per_m;
+  m.free = {"damping_Ns_per_m", "force_offset_N"};
+  return m;
+}
+
+bool loops_only(std::string_view id) {
+  return id == "gas_force" || id == "friction_velocity_dependence";
+}
+
+DiagnosisModel baseline_for(std::string_view id) {
+  if (loops_only(id)) return rig_passat();
+  return id == "top_mount_compliance" ? rigid_passat() : bare_passat();
+}
+
+double value_in(const DiagnosisModel& m, const std::string& name) {
+  return m.kind == DataKind::kStrutLoops ? parameter_value(m.strut, name)
+                                         : parameter_value(m.car, name);
+}
+
 TEST(EffectLibrary, HoldsTheIssuesIdsSortedAndNamesThemWhenOneIsUnknown) {
   std::vector<std::string> ids;
   for (const auto& e : effect_library()) ids.emplace_back(e->id());
+  EXPECT_EQ(ids.size(), 10u);
   EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
   for (const char* id :
        {"damper_friction", "top_mount_compliance", "top_mount_amplitude_stiffening", "tyre_damping",
-        "damper_asymmetry", "damper_digressive", "bump_stop", "tyre_lift_off"}) {
+        "damper_asymmetry", "damper_digressive", "bump_stop", "tyre_lift_off",
+        "friction_velocity_dependence", "gas_force"}) {
     EXPECT_EQ(find_effect(id).id(), id);
     EXPECT_GT(find_effect(id).description().size(), 40u) << id;
   }
@@ -59,19 +90,18 @@ TEST(EffectLibrary, HoldsTheIssuesIdsSortedAndNamesThemWhenOneIsUnknown) {
 
 TEST(EffectLibrary, EachEffectStartsInsideItsBoundsAndCannotBeAddedTwice) {
   for (const auto& effect : effect_library()) {
-    const DiagnosisModel baseline =
-        effect->id() == "top_mount_compliance" ? rigid_passat() : bare_passat();
+    const DiagnosisModel baseline = baseline_for(effect->id());
     ASSERT_EQ(effect->not_applicable(baseline), "") << effect->id();
     const EffectChange change = effect->change(baseline);
     const DiagnosisModel with = apply(baseline, change);
     for (const auto& p : change.free) {
-      const double v = parameter_value(with.car, p.name);
+      const double v = value_in(with, p.name);
       EXPECT_LT(p.lower, p.upper) << effect->id() << " " << p.name;
       EXPECT_GT(v, p.lower) << effect->id() << " " << p.name;
       EXPECT_LT(v, p.upper) << effect->id() << " " << p.name;
     }
     for (const auto& [key, value] : change.set) {
-      EXPECT_EQ(parameter_value(with.car, key), value) << effect->id() << " " << key;
+      EXPECT_EQ(value_in(with, key), value) << effect->id() << " " << key;
     }
     EXPECT_NE(effect->not_applicable(with), "") << effect->id() << " applies twice";
   }
@@ -83,6 +113,61 @@ TEST(EffectLibrary, EachEffectStartsInsideItsBoundsAndCannotBeAddedTwice) {
   EXPECT_NE(find_effect("top_mount_amplitude_stiffening").not_applicable(rigid_passat()), "");
   EXPECT_EQ(find_effect("damper_friction").change(bare_passat()).damper_state,
             model::DamperState::kStickSlip);
+  // Loops: the vehicle-only effects say why, the loop-only ones skip spectra, friction's
+  // velocity dependence needs friction, and a fitted load-cell offset carries the gas preload.
+  for (const char* id : {"tyre_damping", "tyre_lift_off", "bump_stop", "damper_asymmetry",
+                         "damper_digressive", "top_mount_amplitude_stiffening"}) {
+    EXPECT_NE(find_effect(id).not_applicable(rig_passat()), "") << id;
+  }
+  EXPECT_NE(find_effect("gas_force").not_applicable(bare_passat()), "");
+  EXPECT_NE(find_effect("friction_velocity_dependence").not_applicable(bare_passat()), "");
+  EXPECT_NE(find_effect("friction_velocity_dependence").not_applicable(rig_passat(0.0)), "");
+  EXPECT_EQ(find_effect("damper_friction").not_applicable(rig_passat(0.0)), "");
+  EXPECT_EQ(find_effect("top_mount_compliance").not_applicable(rig_passat(60.0, 1e9)), "");
+  EXPECT_EQ(find_effect("gas_force").change(rig_passat()).free.size(), 1u);
+  DiagnosisModel fixed_offset = rig_passat();
+  fixed_offset.free = {"damping_Ns_per_m"};
+  EXPECT_EQ(find_effect("gas_force").change(fixed_offset).free.size(), 2u);
+}
+
+// The cost's exact Jacobian at `x` against central differences (steps of `relative_step` times
+// max(|x|, 1)): every column moves the residuals (by 1e-3 per relative change at least) and
+// agrees within `tolerance` of its largest entry; the residuals with and without the Jacobian
+// agree.
+void expect_exact_jacobian(const ceres::CostFunction& cost, std::vector<double> x,
+                           const std::vector<std::string>& names, double relative_step,
+                           double tolerance) {
+  const std::size_t n = x.size();
+  std::vector<const double*> blocks;
+  for (const double& v : x) blocks.push_back(&v);
+  const auto rows = static_cast<std::size_t>(cost.num_residuals());
+  std::vector<double> residuals(rows), plain(rows);
+  std::vector<std::vector<double>> exact(n, std::vector<double>(rows));
+  std::vector<double*> jacobians;
+  for (auto& j : exact) jacobians.push_back(j.data());
+  ASSERT_TRUE(cost.Evaluate(blocks.data(), residuals.data(), jacobians.data()));
+  ASSERT_TRUE(cost.Evaluate(blocks.data(), plain.data(), nullptr));
+  double d = 0;
+  for (std::size_t r = 0; r < rows; ++r) d = std::max(d, std::abs(plain[r] - residuals[r]));
+  EXPECT_LT(d, 1e-9) << "the residuals with and without the Jacobian differ";
+  for (std::size_t p = 0; p < n; ++p) {
+    const double saved = x[p], step = relative_step * std::max(std::abs(saved), 1.0);
+    std::vector<double> up(rows), down(rows);
+    x[p] = saved + step;
+    ASSERT_TRUE(cost.Evaluate(blocks.data(), up.data(), nullptr));
+    x[p] = saved - step;
+    ASSERT_TRUE(cost.Evaluate(blocks.data(), down.data(), nullptr));
+    x[p] = saved;
+    double scale = 0.0, worst = 0.0;
+    for (std::size_t r = 0; r < rows; ++r) {
+      scale = std::max(scale, std::abs(exact[p][r]));
+      worst = std::max(worst, std::abs((up[r] - down[r]) / (2.0 * step) - exact[p][r]));
+    }
+    // Per relative change of the parameter (their units differ by orders of magnitude).
+    EXPECT_GT(scale * std::max(std::abs(saved), 1.0), 1e-3)
+        << names[p] << " does not move the residuals";
+    EXPECT_LT(worst, tolerance * scale) << names[p];
+  }
 }
 
 // A 10 s record on a class C road at 50 km/h: rough enough that the bump stop (20 mm) and the
@@ -95,8 +180,7 @@ class EffectGradient : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EffectGradient, PsdJacobianMatchesCentralDifferences) {
   const Effect& effect = find_effect(GetParam());
-  const DiagnosisModel baseline =
-      effect.id() == "top_mount_compliance" ? rigid_passat() : bare_passat();
+  const DiagnosisModel baseline = baseline_for(effect.id());
   const EffectChange change = effect.change(baseline);
   const DiagnosisModel with = apply(baseline, change);
   const PsdMeasurement m = rough_record(with.car);
@@ -109,40 +193,9 @@ TEST_P(EffectGradient, PsdJacobianMatchesCentralDifferences) {
   options.segment_s = 2.0;
   options.steps_per_sample = 2;
   std::unique_ptr<ceres::CostFunction> cost(make_psd_cost(m, with.car, options));
-  const std::size_t n = options.free.size();
-  std::vector<double> x(n, 1.0);
+  std::vector<double> x(options.free.size(), 1.0);
   x[0] = 1.05;  // off the truth, so residuals are not zero
-  std::vector<const double*> blocks;
-  for (const double& v : x) blocks.push_back(&v);
-  const auto rows = static_cast<std::size_t>(cost->num_residuals());
-  std::vector<double> residuals(rows);
-  std::vector<std::vector<double>> exact(n, std::vector<double>(rows));
-  std::vector<double*> jacobians;
-  for (auto& j : exact) jacobians.push_back(j.data());
-  ASSERT_TRUE(cost->Evaluate(blocks.data(), residuals.data(), jacobians.data()));
-  {
-    std::vector<double> plain(rows);
-    ASSERT_TRUE(cost->Evaluate(blocks.data(), plain.data(), nullptr));
-    double d = 0;
-    for (std::size_t r = 0; r < rows; ++r) d = std::max(d, std::abs(plain[r] - residuals[r]));
-    EXPECT_LT(d, 1e-9) << "the residuals with and without the Jacobian differ";
-  }
-  for (std::size_t p = 0; p < n; ++p) {
-    const double saved = x[p], step = 1e-6;
-    std::vector<double> up(rows), down(rows);
-    x[p] = saved + step;
-    ASSERT_TRUE(cost->Evaluate(blocks.data(), up.data(), nullptr));
-    x[p] = saved - step;
-    ASSERT_TRUE(cost->Evaluate(blocks.data(), down.data(), nullptr));
-    x[p] = saved;
-    double scale = 0.0, worst = 0.0;
-    for (std::size_t r = 0; r < rows; ++r) {
-      scale = std::max(scale, std::abs(exact[p][r]));
-      worst = std::max(worst, std::abs((up[r] - down[r]) / (2.0 * step) - exact[p][r]));
-    }
-    EXPECT_GT(scale, 1e-3) << options.free[p] << " does not move the spectra";
-    EXPECT_LT(worst, 1e-3 * scale) << options.free[p];
-  }
+  expect_exact_jacobian(*cost, x, options.free, 1e-6, 1e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Library, EffectGradient,
@@ -150,6 +203,47 @@ INSTANTIATE_TEST_SUITE_P(Library, EffectGradient,
                                            "top_mount_amplitude_stiffening", "tyre_damping",
                                            "damper_asymmetry", "damper_digressive", "bump_stop",
                                            "tyre_lift_off"));
+
+// A rig record of the multisine the hidden rig datasets use (3, 1.5, 0.8 mm at 0.7, 2.3, 6.1 Hz),
+// 4 s at 500 Hz, the force of `strut` itself.
+HysteresisRecord rig_record(const model::StrutTestParameters<double>& strut) {
+  HysteresisRecord r;
+  r.source = "rig";
+  for (int k = 0; k <= 2000; ++k) {
+    const double t = k / 500.0, w = 2.0 * std::numbers::pi;
+    r.time_s.push_back(t);
+    r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
+                               0.0008 * std::sin(w * 6.1 * t));
+  }
+  r.force_N = *simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut);
+  return r;
+}
+
+class LoopEffectGradient : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(LoopEffectGradient, HysteresisJacobianMatchesCentralDifferences) {
+  const Effect& effect = find_effect(GetParam());
+  const DiagnosisModel baseline = effect.id() == "damper_friction"        ? rig_passat(0.0)
+                                  : effect.id() == "top_mount_compliance" ? rig_passat(60.0, 1e9)
+                                                                          : rig_passat();
+  ASSERT_EQ(effect.not_applicable(baseline), "");
+  const DiagnosisModel with = apply(baseline, effect.change(baseline));
+  const HysteresisRecord record = rig_record(with.strut);
+  std::vector<std::string> free;
+  for (const auto& p : effect.change(baseline).free) free.push_back(p.name);
+  free.push_back("damping_Ns_per_m");
+  // Off the truth, so residuals are not zero.
+  model::StrutTestParameters<double> at = with.strut;
+  strut_parameter(at, strut_parameter_index(free[0])) *= 1.05;
+  std::unique_ptr<ceres::CostFunction> cost(make_hysteresis_cost(record, at, free));
+  std::vector<double> x;
+  for (const auto& name : free) x.push_back(strut_parameter(at, strut_parameter_index(name)));
+  expect_exact_jacobian(*cost, x, free, 1e-6, 1e-4);
+}
+
+INSTANTIATE_TEST_SUITE_P(LoopLibrary, LoopEffectGradient,
+                         ::testing::Values("gas_force", "friction_velocity_dependence",
+                                           "damper_friction", "top_mount_compliance"));
 
 }  // namespace
 }  // namespace ridefit::fitting::diagnose

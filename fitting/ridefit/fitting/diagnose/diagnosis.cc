@@ -42,22 +42,18 @@ std::vector<std::string> default_free(const model::QuarterCar& car) {
   return free;
 }
 
-// A model fitted on the training data and scored on the held-out data.
-struct Scored {
-  DiagnosisModel model;
-  std::vector<FittedValue> values;
-  double training_cost = 0.0;
-  int iterations = 0;
-  std::size_t training_residuals = 0;
-  double held_out_cost = 0.0;
-  std::vector<double> held_out_body, held_out_wheel;
-  std::string failure;
-};
+DisagreementMap map_of(const PsdMeasurement& m, const std::vector<double>& body,
+                       const std::vector<double>& wheel, const DisagreementOptions& options) {
+  std::vector<ChannelPair> channels;
+  if (!m.body_acc_m_per_s2.empty()) channels.push_back({"body_acc", m.body_acc_m_per_s2, body});
+  if (!m.wheel_acc_m_per_s2.empty()) channels.push_back({"wheel_acc", m.wheel_acc_m_per_s2, wheel});
+  return map_disagreement(channels, m.sample_rate_Hz, options);
+}
 
-Scored fit_and_score(const DiagnosisModel& start, const std::vector<std::string>& free,
-                     const std::map<std::string, std::pair<double, double>>& bounds,
-                     const DiagnosisData& data, const PsdFitOptions& fit_options) {
-  Scored s;
+ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::string>& free,
+                        const ParameterBounds& bounds, const DiagnosisData& data,
+                        const PsdFitOptions& fit_options, const DisagreementOptions& map_options) {
+  ScoredFit s;
   PsdFitOptions options = fit_options;
   options.free = free;
   options.bounds = bounds;
@@ -66,7 +62,8 @@ Scored fit_and_score(const DiagnosisModel& start, const std::vector<std::string>
     s.failure = "the fit found no model it could simulate";
     return s;
   }
-  s.model = {model::QuarterCar(start.car.damper_state(), fit.fitted)};
+  s.model = start;
+  s.model.car = model::QuarterCar(start.car.damper_state(), fit.fitted);
   for (std::size_t i = 0; i < fit.names.size(); ++i) {
     s.values.push_back({fit.names[i], fit.values[i], fit.standard_errors[i]});
   }
@@ -81,23 +78,10 @@ Scored fit_and_score(const DiagnosisModel& start, const std::vector<std::string>
     return s;
   }
   s.held_out_cost = held_out->cost;
-  s.held_out_body = held_out->body_acc_m_per_s2;
-  s.held_out_wheel = held_out->wheel_acc_m_per_s2;
+  s.held_out_signals = {held_out->body_acc_m_per_s2, held_out->wheel_acc_m_per_s2};
+  s.held_out_gap =
+      map_of(data.held_out, s.held_out_signals[0], s.held_out_signals[1], map_options).gap_dB;
   return s;
-}
-
-double bic(const Scored& s, std::size_t parameters) {
-  const double n = static_cast<double>(s.training_residuals);
-  return n * std::log(std::max(2.0 * s.training_cost / n, 1e-300)) +
-         static_cast<double>(parameters) * std::log(n);
-}
-
-DisagreementMap map_of(const PsdMeasurement& m, const std::vector<double>& body,
-                       const std::vector<double>& wheel, const DisagreementOptions& options) {
-  std::vector<ChannelPair> channels;
-  if (!m.body_acc_m_per_s2.empty()) channels.push_back({"body_acc", m.body_acc_m_per_s2, body});
-  if (!m.wheel_acc_m_per_s2.empty()) channels.push_back({"wheel_acc", m.wheel_acc_m_per_s2, wheel});
-  return map_disagreement(channels, m.sample_rate_Hz, options);
 }
 
 std::string describe(const DisagreementRegion& r) {
@@ -115,18 +99,25 @@ DiagnosisData split_record(const PsdMeasurement& record) {
   return {slice(record, 0, half), slice(record, half, record.time_s.size())};
 }
 
+DiagnosisResult result_of(const Selection& selection, DataKind kind) {
+  DiagnosisResult result;
+  result.kind = kind;
+  result.baseline = selection.baseline.model;
+  result.baseline_parameters = selection.baseline.values;
+  result.baseline_held_out_cost = selection.baseline.held_out_cost;
+  result.rounds = selection.rounds;
+  result.named = selection.named;
+  result.final_model = selection.final_fit.model;
+  result.final_parameters = selection.final_fit.values;
+  return result;
+}
+
 DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& data,
                          const DiagnosisOptions& options,
                          const std::function<void(const std::string&)>& progress) {
   auto say = [&](const std::string& line) {
     if (progress) progress(line);
   };
-  std::vector<const Effect*> library;
-  if (options.effects.empty()) {
-    for (const auto& effect : effect_library()) library.push_back(effect.get());
-  } else {
-    for (const auto& id : options.effects) library.push_back(&find_effect(id));
-  }
   DisagreementOptions map_options = options.map;
   map_options.band_low_Hz = options.fit.band_low_Hz;
   map_options.band_high_Hz = options.fit.band_high_Hz;
@@ -139,150 +130,38 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   PsdFitOptions screening = with_step(options.screening_step_s);
   // An effect the data cannot see wanders along a flat cost; screening stops it sooner.
   screening.max_iterations = std::min(screening.max_iterations, options.screening_iterations);
+  // The reported fits (baseline and with the named effects) take the fine step, from the
+  // screening fit's optimum: what the report, the map and model.yaml show.
   const PsdFitOptions final_fit = with_step(options.final_step_s);
-  // The reported fits (baseline and with the named effects) on the fine step, from the screening
-  // fit's optimum: what the report, the map and model.yaml show.
-  auto refine = [&](const Scored& screened, const std::vector<std::string>& free,
-                    const std::map<std::string, std::pair<double, double>>& bounds) {
-    if (final_fit.steps_per_sample == screening.steps_per_sample) return screened;
-    Scored fine = fit_and_score(screened.model, free, bounds, data, final_fit);
-    return fine.failure.empty() ? fine : screened;
+  const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& free,
+                              const ParameterBounds& bounds, bool reported) {
+    return fit_and_score(start, free, bounds, data, reported ? final_fit : screening, map_options);
   };
+  SelectionOptions selection_options;
+  selection_options.min_held_out_improvement = options.min_held_out_improvement;
+  selection_options.min_bic_drop = options.min_bic_drop;
+  selection_options.max_effects = options.max_effects;
+  selection_options.threads = options.threads;
+  selection_options.refine = final_fit.steps_per_sample != screening.steps_per_sample;
+  DiagnosisModel start = baseline;
+  start.kind = DataKind::kVehicleSpectra;
+  const Selection selection = select_effects(
+      start, options.baseline_free.empty() ? default_free(baseline.car) : options.baseline_free,
+      options.fit.bounds, effects_to_try(options.effects), fit, selection_options, say);
 
-  DiagnosisResult result;
-  std::vector<std::string> free =
-      options.baseline_free.empty() ? default_free(baseline.car) : options.baseline_free;
-  std::map<std::string, std::pair<double, double>> bounds = options.fit.bounds;
-  Scored current = fit_and_score(baseline, free, bounds, data, screening);
-  if (!current.failure.empty()) {
-    throw RunError(fmt::format("the baseline cannot be fitted: {}", current.failure));
-  }
-  Scored reported = refine(current, free, bounds);
-  result.baseline = reported.model;
-  result.baseline_parameters = reported.values;
-  result.baseline_held_out_cost = reported.held_out_cost;
+  DiagnosisResult result = result_of(selection, DataKind::kVehicleSpectra);
+  const ScoredFit& before = selection.baseline;
+  const ScoredFit& after = selection.final_fit;
   result.before =
-      map_of(data.held_out, reported.held_out_body, reported.held_out_wheel, map_options);
-  result.before_body = reported.held_out_body;
-  result.before_wheel = reported.held_out_wheel;
-  say(fmt::format("baseline fitted: gap {:.2f} dB, {} disagreement region(s)", result.before.gap_dB,
-                  result.before.regions.size()));
-
-  for (int round = 0; round < options.max_effects; ++round) {
-    DiagnosisRound this_round;
-    const double start_bic = bic(current, free.size());
-    std::vector<EffectTrial> trials;
-    std::vector<Scored> scores;
-    std::vector<std::pair<std::size_t, EffectChange>> to_try;
-    for (const Effect* effect : library) {
-      EffectTrial trial;
-      trial.id = std::string(effect->id());
-      if (std::find(result.named.begin(), result.named.end(), trial.id) != result.named.end()) {
-        trial.skipped = "already added";
-      } else {
-        trial.skipped = effect->not_applicable(current.model);
-      }
-      if (trial.skipped.empty()) to_try.emplace_back(trials.size(), effect->change(current.model));
-      trials.push_back(std::move(trial));
-    }
-    scores.resize(trials.size());
-    std::vector<std::vector<std::string>> trial_free(trials.size());
-    std::vector<std::map<std::string, std::pair<double, double>>> trial_bounds(trials.size(),
-                                                                               bounds);
-    std::mutex lock;
-    study::parallel_for(
-        to_try.size(), options.threads,
-        [&](std::size_t i) {
-          const auto& [index, change] = to_try[i];
-          EffectTrial& trial = trials[index];
-          for (const auto& p : change.free) {
-            trial_free[index].push_back(p.name);
-            trial_bounds[index][p.name] = {p.lower, p.upper};
-          }
-          for (const auto& name : free) {
-            if (std::find(trial_free[index].begin(), trial_free[index].end(), name) ==
-                trial_free[index].end()) {
-              trial_free[index].push_back(name);
-            }
-          }
-          trial.free_parameters = static_cast<int>(trial_free[index].size());
-          scores[index] = fit_and_score(apply(current.model, change), trial_free[index],
-                                        trial_bounds[index], data, screening);
-          for (const auto& start : change.other_starts) {
-            EffectChange other = change;
-            for (const auto& [key, value] : start) other.set[key] = value;
-            Scored alternative = fit_and_score(apply(current.model, other), trial_free[index],
-                                               trial_bounds[index], data, screening);
-            if (alternative.failure.empty() &&
-                (!scores[index].failure.empty() ||
-                 alternative.training_cost < scores[index].training_cost)) {
-              scores[index] = std::move(alternative);
-            }
-          }
-          const Scored& scored = scores[index];
-          trial.failed = scored.failure;
-          if (scored.failure.empty()) {
-            trial.parameters = scored.values;
-            trial.training_cost = scored.training_cost;
-            trial.iterations = scored.iterations;
-            trial.held_out_cost = scored.held_out_cost;
-            trial.bic = bic(scored, trial_free[index].size());
-            trial.held_out_improvement = 1.0 - scored.held_out_cost / current.held_out_cost;
-            trial.bic_change = trial.bic - start_bic;
-            trial.held_out_gap_dB =
-                map_of(data.held_out, scored.held_out_body, scored.held_out_wheel, map_options)
-                    .gap_dB;
-            trial.significant = trial.held_out_improvement >= options.min_held_out_improvement &&
-                                trial.bic_change <= -options.min_bic_drop;
-            trial.model = scored.model;
-          }
-        },
-        [&](std::size_t i) {
-          const EffectTrial& trial = trials[to_try[i].first];
-          std::lock_guard guard(lock);
-          say(trial.failed.empty()
-                  ? fmt::format("round {}: {} held-out cost {:.4g} ({:+.0f} %), BIC {:+.1f}, {} "
-                                "iterations",
-                                round + 1, trial.id, trial.held_out_cost,
-                                -100.0 * trial.held_out_improvement, trial.bic_change,
-                                trial.iterations)
-                  : fmt::format("round {}: {} failed: {}", round + 1, trial.id, trial.failed));
-        });
-    // Tried and fitted first, best held-out cost first; then failed, then skipped.
-    auto rank = [&](std::size_t i) {
-      return !trials[i].skipped.empty() ? 2 : !trials[i].failed.empty() ? 1 : 0;
-    };
-    std::vector<std::size_t> order(trials.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      if (rank(a) != rank(b)) return rank(a) < rank(b);
-      return rank(a) == 0 && trials[a].held_out_cost < trials[b].held_out_cost;
-    });
-    for (std::size_t i : order) this_round.trials.push_back(trials[i]);
-    const bool accept =
-        !order.empty() && rank(order.front()) == 0 && trials[order.front()].significant;
-    if (accept) {
-      const std::size_t best = order.front();
-      this_round.accepted = trials[best].id;
-      result.named.push_back(trials[best].id);
-      free = trial_free[best];
-      bounds = trial_bounds[best];
-      current = scores[best];
-      reported = refine(current, free, bounds);
-      say(fmt::format("round {}: accepted {}", round + 1, trials[best].id));
-    } else {
-      say(fmt::format("round {}: no effect is significant", round + 1));
-    }
-    result.rounds.push_back(std::move(this_round));
-    if (!accept) break;
-  }
-
-  result.final_model = reported.model;
-  result.final_parameters = reported.values;
+      map_of(data.held_out, before.held_out_signals[0], before.held_out_signals[1], map_options);
+  result.before_body = before.held_out_signals[0];
+  result.before_wheel = before.held_out_signals[1];
   result.after =
-      map_of(data.held_out, reported.held_out_body, reported.held_out_wheel, map_options);
-  result.after_body = reported.held_out_body;
-  result.after_wheel = reported.held_out_wheel;
+      map_of(data.held_out, after.held_out_signals[0], after.held_out_signals[1], map_options);
+  result.after_body = after.held_out_signals[0];
+  result.after_wheel = after.held_out_signals[1];
+  result.gap_before = result.before.gap_dB;
+  result.gap_after = result.after.gap_dB;
   // A narrow region on the flank of a sharp mode is the PSD estimate's bias there (the
   // interval does not cover bias), not a missing effect: it must also be wide enough.
   // Above the road's band the measured side is sensor noise as much as response, and the
@@ -294,22 +173,9 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
       result.unexplained.push_back(region);
     }
   }
-  std::string verdict = result.named.empty() ? "" : "missing effect found: ";
-  for (std::size_t i = 0; i < result.named.size(); ++i) {
-    verdict += (i ? ", then " : "") + result.named[i];
-  }
-  if (!result.unexplained.empty()) {
-    verdict += fmt::format(
-        "{}a significant disagreement remains that no effect of the library "
-        "explains: {}",
-        verdict.empty() ? "" : "; ", describe(result.unexplained.front()));
-    if (result.unexplained.size() > 1) {
-      verdict += fmt::format(" (and {} more region(s))", result.unexplained.size() - 1);
-    }
-  } else if (result.named.empty()) {
-    verdict = "no missing effect found";
-  }
-  result.verdict = verdict;
+  std::vector<std::string> unexplained;
+  for (const auto& region : result.unexplained) unexplained.push_back(describe(region));
+  result.verdict = verdict_of(result.named, unexplained);
   return result;
 }
 

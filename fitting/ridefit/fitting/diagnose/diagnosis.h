@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "ridefit/fitting/diagnose/disagreement_map.h"
-#include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/fitting/diagnose/effect_selection.h"
+#include "ridefit/fitting/diagnose/loop_disagreement.h"
 #include "ridefit/fitting/psd_fit.h"
 
 namespace ridefit::fitting::diagnose {
@@ -52,51 +53,41 @@ struct DiagnosisOptions {
   unsigned threads = 0;  // 0 = every core
 };
 
-struct FittedValue {
-  std::string name;
-  double value = 0.0;
-  std::optional<double> standard_error;
-};
-
-// One effect tried in one round.
-struct EffectTrial {
-  std::string id;
-  std::string skipped;                  // why it was not tried ("" when it was)
-  std::string failed;                   // why its fit failed ("" when it did not)
-  std::vector<FittedValue> parameters;  // the effect's own parameters, then the baseline's
-  int free_parameters = 0;
-  int iterations = 0;          // of its fit
-  double training_cost = 0.0;  // ½·Σ r² of the log-PSD residuals
-  double held_out_cost = 0.0;
-  double bic = 0.0;                   // n·ln(2·cost/n) + k·ln(n) on the training data
-  double held_out_improvement = 0.0;  // 1 − held-out cost / the round's starting held-out cost
-  double bic_change = 0.0;            // BIC − the round's starting BIC (negative: better)
-  double held_out_gap_dB = 0.0;       // the disagreement map's gap on the held-out data
-  bool significant = false;           // passes both tests
-  DiagnosisModel model;               // fitted, with the effect
-};
-
-struct DiagnosisRound {
-  std::vector<EffectTrial> trials;  // tried ones ranked by held-out cost, then skipped/failed
-  std::string accepted;             // the id, or "" when nothing was significant
-};
-
 struct DiagnosisResult {
+  DataKind kind = DataKind::kVehicleSpectra;
   DiagnosisModel baseline;  // with the baseline's free parameters fitted
   std::vector<FittedValue> baseline_parameters;
   double baseline_held_out_cost = 0.0;
-  DisagreementMap before;  // held-out data against the fitted baseline
-  DisagreementMap after;   // held-out data against the final model
+  // The gap on the held-out data before (fitted baseline) and after (final model): RMS dB over
+  // the band and the channels for spectra (DisagreementMap::gap_dB), NRMSE in % for loops
+  // (LoopDisagreementMap::gap_percent).
+  double gap_before = 0.0;
+  double gap_after = 0.0;
   std::vector<DiagnosisRound> rounds;
   std::vector<std::string> named;  // accepted effect ids, in order
   DiagnosisModel final_model;      // the baseline with the named effects, refitted
   std::vector<FittedValue> final_parameters;
-  std::vector<DisagreementRegion> unexplained;  // significant regions no effect explained
-  // The held-out simulations behind `before` and `after` (accelerations, measured time base).
-  std::vector<double> before_body, before_wheel, after_body, after_wheel;
   // "missing effect found: …", "no missing effect found", or the unexplained disagreement.
   std::string verdict;
+
+  // Vehicle spectra: the maps of the held-out data against the fitted baseline and the final
+  // model, the simulations behind them (measured time base), the significant regions left that
+  // no effect explained.
+  DisagreementMap before;
+  DisagreementMap after;
+  std::vector<double> before_body, before_wheel, after_body, after_wheel;
+  std::vector<DisagreementRegion> unexplained;
+
+  // Strut loops: the same for the held-out records' forces.
+  LoopDisagreementMap loops_before;
+  LoopDisagreementMap loops_after;
+  std::vector<std::vector<double>> before_force_N, after_force_N;
+  std::vector<LoopRegion> unexplained_loops;
 };
+
+// The kind-independent part of a result: the baseline's and the final fit's models and
+// parameters, the rounds and the named effects (the maps and the verdict are the caller's).
+DiagnosisResult result_of(const Selection& selection, DataKind kind);
 
 // Fits the baseline, maps its disagreement with the held-out data, then tries each applicable
 // effect of the library (in parallel): adds it, refits every free parameter on the training

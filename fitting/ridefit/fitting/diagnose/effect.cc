@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/model/quarter_car_parameter_names.h"
 
@@ -38,7 +39,19 @@ double parameter_value(const model::QuarterCar& car, std::string_view name) {
   return model::quarter_car_parameter(car.parameters(), *index);
 }
 
+double parameter_value(const model::StrutTestParameters<double>& strut, std::string_view name) {
+  model::StrutTestParameters<double> copy = strut;
+  return strut_parameter(copy, strut_parameter_index(name));
+}
+
 DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change) {
+  if (model.kind == DataKind::kStrutLoops) {
+    DiagnosisModel changed = model;
+    for (const auto& [name, value] : change.set) {
+      strut_parameter(changed.strut, strut_parameter_index(name)) = value;
+    }
+    return changed;
+  }
   model::QuarterCarParameters<double> p = model.car.parameters();
   for (const auto& [name, value] : change.set) {
     if (name == "tyre_lift_off") {
@@ -49,7 +62,9 @@ DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change) {
     if (!index) throw InputError(fmt::format("'{}' is not a quarter-car parameter", name));
     model::quarter_car_parameter(p, *index) = value;
   }
-  return {model::QuarterCar(change.damper_state.value_or(model.car.damper_state()), p)};
+  DiagnosisModel changed = model;
+  changed.car = model::QuarterCar(change.damper_state.value_or(model.car.damper_state()), p);
+  return changed;
 }
 
 }  // namespace ridefit::fitting::diagnose

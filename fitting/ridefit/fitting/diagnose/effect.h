@@ -8,18 +8,29 @@
 #include <vector>
 
 #include "ridefit/model/quarter_car.h"
+#include "ridefit/model/strut_test.h"
 
 namespace ridefit::fitting::diagnose {
 
-// A model under diagnosis, with the data it is compared against in mind: vehicle spectra (a
-// road and body/wheel accelerations) are what the library's effects are tried on.
+// What the measurement is: vehicle accelerations over a road, compared as spectra, or strut
+// rig tests (imposed displacement, measured force), compared as loops in time.
+enum class DataKind { kVehicleSpectra, kStrutLoops };
+
+// A model under diagnosis, with the data it is compared against in mind: a quarter car for
+// vehicle spectra, the strut on its rig (fitting/strut_parameters.h names) for loops.
 struct DiagnosisModel {
   model::QuarterCar car{model::DamperState::kSlip, model::QuarterCarParameters<double>{}};
+  DataKind kind = DataKind::kVehicleSpectra;
+  model::StrutTestParameters<double> strut{};
+  // The baseline's parameters every fit frees (set by the diagnosis; an effect whose parameter
+  // one of them already carries leaves that one out).
+  std::vector<std::string> free{};
 };
 
 // A parameter a fit frees, with the bounds that keep it physical.
 struct FreeParameter {
-  std::string name;  // a quarter-car key (model/quarter_car_parameter_names.h)
+  std::string name;  // a quarter-car key (model/quarter_car_parameter_names.h) or, for loops, a
+                     // strut-test one (fitting/strut_parameters.h)
   double lower = 0.0;
   double upper = 0.0;
 };
@@ -42,8 +53,8 @@ class Effect {
   virtual std::string_view id() const = 0;
   // One sentence: what it is physically and what it does to the response.
   virtual std::string_view description() const = 0;
-  // Why the effect cannot be added to `baseline` (it is already there, or the data cannot show
-  // it), or "" when it can.
+  // Why the effect cannot be added to `baseline` (it is already there, or data of the baseline's
+  // kind cannot show it), or "" when it can.
   virtual std::string not_applicable(const DiagnosisModel& baseline) const = 0;
   // The change that adds it, with a start inside its bounds. Called only when applicable.
   virtual EffectChange change(const DiagnosisModel& baseline) const = 0;
@@ -59,6 +70,9 @@ const Effect& find_effect(std::string_view id);
 
 // `model` with `change` applied (keys set, topology changed).
 DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change);
+
+// A strut's value of a key of fitting/strut_parameters.h.
+double parameter_value(const model::StrutTestParameters<double>& strut, std::string_view name);
 
 // A quarter car's value of a key of model/quarter_car_parameter_names.h, or of tyre_lift_off
 // (0 or 1).

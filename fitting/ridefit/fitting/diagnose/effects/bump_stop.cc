@@ -14,6 +14,9 @@ class BumpStop : public Effect {
            "put body energy far above the body mode";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return "the rig tests stay inside the strut's free travel and the rig model has no bump stop";
+    }
     if (baseline.car.parameters().bump_stop_stiffness_N_per_m > 0.0) {
       return "the baseline already has a bump stop";
     }

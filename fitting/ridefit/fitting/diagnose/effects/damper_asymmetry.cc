@@ -14,6 +14,10 @@ class DamperAsymmetry : public Effect {
            "rough roads and the response gains even harmonics";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return "the rig model's damper is symmetric (one c); fit rebound and compression strokes "
+             "separately, or diagnose vehicle spectra";
+    }
     if (baseline.car.damper_state() == model::DamperState::kStick) {
       return "the baseline's damper is locked (stick): its valving cannot act";
     }

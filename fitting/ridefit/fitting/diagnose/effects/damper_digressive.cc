@@ -14,6 +14,10 @@ class DamperDigressive : public Effect {
            "rough roads than the linear coefficient predicts";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return "the rig model's damper is linear (one c); diagnose vehicle spectra, or fit the loops "
+             "of each velocity range separately";
+    }
     if (baseline.car.damper_state() == model::DamperState::kStick) {
       return "the baseline's damper is locked (stick): its valving cannot act";
     }

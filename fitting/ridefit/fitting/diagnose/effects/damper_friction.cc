@@ -1,4 +1,5 @@
-// damper_friction: Dahl friction in the damper path (seed 000, Section 3.1).
+// damper_friction: Dahl friction in the damper path (seed 000, Section 3.1), on the road or on
+// the rig.
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
@@ -14,6 +15,9 @@ class DamperFriction : public Effect {
            "small amplitude, the body mode moves up and the damping seen at low amplitude grows";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return baseline.strut.coulomb_force_N > 0.0 ? "the baseline already has Dahl friction" : "";
+    }
     const auto& car = baseline.car;
     if (car.damper_state() == model::DamperState::kStick) {
       return "the baseline's damper is locked (stick): friction beside it cannot act";
@@ -27,9 +31,10 @@ class DamperFriction : public Effect {
   EffectChange change(const DiagnosisModel& baseline) const override {
     // σ0 far above the top mount (the pre-sliding branch is then set by the top mount, which is
     // why σ0 is not fitted from spectra) unless the model already names one.
-    const double sigma0 = baseline.car.parameters().dahl_sigma0_N_per_m > 1e3
-                              ? baseline.car.parameters().dahl_sigma0_N_per_m
-                              : 5e6;
+    const double named = baseline.kind == DataKind::kStrutLoops
+                             ? baseline.strut.dahl_sigma0_N_per_m
+                             : baseline.car.parameters().dahl_sigma0_N_per_m;
+    const double sigma0 = named > 1e3 ? named : 5e6;
     return {{{"dahl_sigma0_N_per_m", sigma0}, {"coulomb_force_N", 30.0}, {"dahl_exponent", 1.0}},
             model::DamperState::kStickSlip,
             {{"coulomb_force_N", 1.0, 1000.0}},

@@ -15,6 +15,10 @@ class TopMountAmplitudeStiffening : public Effect {
            "strokes (rubber's amplitude dependence): the wheel mode sits higher on smooth roads";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return "the rig model's top mount is linear; the stiffening shows between the rig's large "
+             "strokes and the road's small ones, in vehicle spectra";
+    }
     const auto& p = baseline.car.parameters();
     if (p.top_mount_transition_deflection_m > 0.0) {
       return "the baseline's top mount already stiffens at small amplitude";

@@ -18,7 +18,10 @@ class TopMountCompliance : public Effect {
            "bypassed at high frequency, so the wheel mode rises and loses damping";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
-    if (baseline.car.parameters().top_mount_stiffness_N_per_m < kRigid_N_per_m) {
+    const double k = baseline.kind == DataKind::kStrutLoops
+                         ? baseline.strut.top_mount_stiffness_N_per_m
+                         : baseline.car.parameters().top_mount_stiffness_N_per_m;
+    if (k < kRigid_N_per_m) {
       return "the baseline already has a compliant damper-path top mount "
              "(top_mount_stiffness_N_per_m below 1e9)";
     }

@@ -14,6 +14,9 @@ class TyreDamping : public Effect {
            "wheel-hop peak and passes more road input above it";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return "strut rig loops have no tyre";
+    }
     if (baseline.car.parameters().tyre_damping_Ns_per_m > 0.0) {
       return "the baseline already has tyre damping (free it with --free to refit it)";
     }

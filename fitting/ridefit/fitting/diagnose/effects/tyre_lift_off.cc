@@ -14,6 +14,9 @@ class TyreLiftOff : public Effect {
            "wheel flies and lands, putting energy above the wheel mode; no parameter to fit";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return "strut rig loops have no tyre";
+    }
     if (baseline.car.parameters().tyre_lift_off) return "the baseline's tyre already lifts off";
     return "";
   }

@@ -1,0 +1,107 @@
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+
+// The forward selection both diagnoses share (spectra and loops): what is fitted and how a fit
+// is scored differs by data kind and comes in as a function; the rounds, the tests of
+// significance and the ranking are here once.
+
+struct FittedValue {
+  std::string name;
+  double value = 0.0;
+  std::optional<double> standard_error;
+};
+
+// A model fitted on the training data and scored on the held-out data.
+struct ScoredFit {
+  DiagnosisModel model;
+  std::vector<FittedValue> values;
+  double training_cost = 0.0;  // ½·Σ r² of the fit's residuals
+  int iterations = 0;
+  std::size_t training_residuals = 0;
+  double held_out_cost = 0.0;  // ½·Σ r² of the same residuals on the held-out data
+  double held_out_gap = 0.0;   // the data kind's gap on the held-out data (dB, or NRMSE %)
+  // The held-out simulation behind maps and figures (body and wheel accelerations, or each
+  // record's force).
+  std::vector<std::vector<double>> held_out_signals;
+  std::string failure;  // "" when the fit and its scoring worked
+};
+
+using ParameterBounds = std::map<std::string, std::pair<double, double>>;
+
+// Fits `free` of `start` within `bounds` on the training data and scores the result on the
+// held-out data; `reported` asks for the finer settings of a fit the report shows.
+using FitAndScore =
+    std::function<ScoredFit(const DiagnosisModel& start, const std::vector<std::string>& free,
+                            const ParameterBounds& bounds, bool reported)>;
+
+// One effect tried in one round.
+struct EffectTrial {
+  std::string id;
+  std::string skipped;                  // why it was not tried ("" when it was)
+  std::string failed;                   // why its fit failed ("" when it did not)
+  std::vector<FittedValue> parameters;  // the effect's own parameters, then the baseline's
+  int free_parameters = 0;
+  int iterations = 0;          // of its fit
+  double training_cost = 0.0;  // ½·Σ r² of the fit's residuals
+  double held_out_cost = 0.0;
+  double bic = 0.0;                   // n·ln(2·cost/n) + k·ln(n) on the training data
+  double held_out_improvement = 0.0;  // 1 − held-out cost / the round's starting held-out cost
+  double bic_change = 0.0;            // BIC − the round's starting BIC (negative: better)
+  double held_out_gap = 0.0;          // the gap on the held-out data (dB, or NRMSE %)
+  bool significant = false;           // passes both tests
+  DiagnosisModel model;               // fitted, with the effect
+};
+
+struct DiagnosisRound {
+  std::vector<EffectTrial> trials;  // tried ones ranked by held-out cost, then skipped/failed
+  std::string accepted;             // the id, or "" when nothing was significant
+};
+
+struct SelectionOptions {
+  // An effect is accepted when it lowers the held-out cost by at least this share AND lowers
+  // the training BIC by at least min_bic_drop (so extra parameters cannot win by themselves).
+  double min_held_out_improvement = 0.3;
+  double min_bic_drop = 20.0;
+  int max_effects = 2;
+  unsigned threads = 0;  // effects fitted at once; 0 = every core
+  // Refit the baseline and each accepted model with reported = true (when screening fits are
+  // coarser than reported ones).
+  bool refine = true;
+};
+
+struct Selection {
+  ScoredFit baseline;  // the reported fit of the baseline
+  std::vector<DiagnosisRound> rounds;
+  std::vector<std::string> named;  // accepted ids, in order
+  ScoredFit final_fit;             // the reported fit with the named effects
+};
+
+// Fits the baseline's `free` parameters, then, round by round, tries each applicable effect of
+// `library` in parallel (adds it, refits its and the baseline's free parameters), ranks them by
+// held-out cost and accepts the best if significant; stops when none is or after max_effects.
+// RunError when the baseline cannot be fitted.
+Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string> free,
+                         ParameterBounds bounds, const std::vector<const Effect*>& library,
+                         const FitAndScore& fit, const SelectionOptions& options,
+                         const std::function<void(const std::string&)>& say);
+
+// The verdict: "missing effect found: a, then b", "no missing effect found", and/or the first
+// of the `unexplained` disagreements (described in words) with how many more remain.
+std::string verdict_of(const std::vector<std::string>& named,
+                       const std::vector<std::string>& unexplained);
+
+// The effects to try: the whole library for an empty list, else those ids (InputError for an
+// unknown one).
+std::vector<const Effect*> effects_to_try(const std::vector<std::string>& ids);
+
+}  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,161 @@
+#include "ridefit/fitting/diagnose/loop_diagnosis.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+HysteresisRecord slice(const HysteresisRecord& r, std::size_t begin, std::size_t end,
+                       const std::string& part) {
+  auto cut = [&](const std::vector<double>& v) {
+    return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(begin),
+                               v.begin() + static_cast<std::ptrdiff_t>(end));
+  };
+  return {r.source + " (" + part + ")", cut(r.time_s), cut(r.displacement_m), cut(r.force_N)};
+}
+
+std::vector<std::string> default_free(const model::StrutTestParameters<double>& strut) {
+  std::vector<std::string> free{"damping_Ns_per_m", "force_offset_N"};
+  if (strut.coulomb_force_N > 0.0) free.push_back("coulomb_force_N");
+  return free;
+}
+
+// The held-out forces of `strut`, or none when the model cannot be solved on one of them.
+std::optional<std::vector<std::vector<double>>> forces_of(
+    const std::vector<HysteresisRecord>& records, const model::StrutTestParameters<double>& strut,
+    const simulate::StrutTestSolverOptions& solver) {
+  std::vector<std::vector<double>> forces;
+  for (const auto& r : records) {
+    auto force =
+        simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut, solver);
+    if (!force) return std::nullopt;
+    forces.push_back(std::move(*force));
+  }
+  return forces;
+}
+
+ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::string>& free,
+                        const ParameterBounds& bounds, const LoopDiagnosisData& data,
+                        const LoopDiagnosisOptions& options) {
+  ScoredFit s;
+  HysteresisFitOptions fit_options;
+  fit_options.free = free;
+  fit_options.bounds = bounds;
+  fit_options.max_iterations = options.max_iterations;
+  fit_options.solver = options.solver;
+  HysteresisFitResult fit;
+  try {
+    fit = fit_hysteresis(data.training, start.strut, fit_options);
+  } catch (const RunError& e) {
+    s.failure = e.what();
+    return s;
+  }
+  if (!std::isfinite(fit.final_cost) || fit.fitted.empty()) {
+    s.failure = "the fit found no model it could simulate";
+    return s;
+  }
+  s.model = start;
+  s.model.strut = fit.fitted.front();
+  for (const auto& p : fit.parameters) s.values.push_back({p.name, p.value, p.standard_error});
+  s.training_cost = fit.final_cost;
+  s.iterations = fit.iterations;
+  for (const auto& r : data.training) s.training_residuals += r.force_N.size();
+  const auto forces = forces_of(data.held_out, s.model.strut, options.solver);
+  if (!forces) {
+    s.failure = "the fitted model cannot be solved on the held-out records";
+    return s;
+  }
+  double squares = 0.0;
+  for (std::size_t i = 0; i < forces->size(); ++i) {
+    for (std::size_t k = 0; k < (*forces)[i].size(); ++k) {
+      const double e = (*forces)[i][k] - data.held_out[i].force_N[k];
+      squares += e * e;
+    }
+  }
+  s.held_out_cost = 0.5 * squares;
+  s.held_out_signals = *forces;
+  s.held_out_gap = map_loop_disagreement(data.held_out, *forces, options.map).gap_percent;
+  return s;
+}
+
+std::string describe(const LoopRegion& r) {
+  const bool velocity = r.quantity == "velocity";
+  const double scale = 1e3;  // mm/s and mm read better on a rig
+  return fmt::format(
+      "{} at {} {:.3g}…{:.3g} {}: simulated force {:+.1f} N against measured "
+      "({:+.1f} % of the force's RMS)",
+      r.record, r.quantity, scale * r.low, scale * r.high, velocity ? "mm/s" : "mm",
+      r.mean_residual_N, 100.0 * r.share);
+}
+
+}  // namespace
+
+LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records) {
+  if (records.empty()) throw InputError("diagnose: no rig record given");
+  LoopDiagnosisData data;
+  if (records.size() == 1) {
+    const HysteresisRecord& r = records.front();
+    const std::size_t half = r.time_s.size() / 2;
+    data.training.push_back(slice(r, 0, half, "first half"));
+    data.held_out.push_back(slice(r, half, r.time_s.size(), "second half"));
+    return data;
+  }
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    (i % 2 == 0 ? data.training : data.held_out).push_back(records[i]);
+  }
+  return data;
+}
+
+DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnosisData& data,
+                               const LoopDiagnosisOptions& options,
+                               const std::function<void(const std::string&)>& progress) {
+  auto say = [&](const std::string& line) {
+    if (progress) progress(line);
+  };
+  if (data.training.empty() || data.held_out.empty()) {
+    throw InputError("diagnose: loops need records to fit and records to judge");
+  }
+  const std::vector<std::string> free =
+      options.baseline_free.empty() ? default_free(baseline.strut) : options.baseline_free;
+  for (const auto& name : free) strut_parameter_index(name);
+  const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& names,
+                              const ParameterBounds& bounds,
+                              bool) { return fit_and_score(start, names, bounds, data, options); };
+  SelectionOptions selection_options;
+  selection_options.min_held_out_improvement = options.min_held_out_improvement;
+  selection_options.min_bic_drop = options.min_bic_drop;
+  selection_options.max_effects = options.max_effects;
+  selection_options.threads = options.threads;
+  selection_options.refine = false;  // the screening fit is the reported one
+  DiagnosisModel start = baseline;
+  start.kind = DataKind::kStrutLoops;
+  const Selection selection =
+      select_effects(start, free, {}, effects_to_try(options.effects), fit, selection_options, say);
+
+  DiagnosisResult result = result_of(selection, DataKind::kStrutLoops);
+  const ScoredFit& before = selection.baseline;
+  const ScoredFit& after = selection.final_fit;
+  result.loops_before = map_loop_disagreement(data.held_out, before.held_out_signals, options.map);
+  result.before_force_N = before.held_out_signals;
+  result.loops_after = map_loop_disagreement(data.held_out, after.held_out_signals, options.map);
+  result.after_force_N = after.held_out_signals;
+  result.gap_before = result.loops_before.gap_percent;
+  result.gap_after = result.loops_after.gap_percent;
+  std::vector<std::string> unexplained;
+  for (const auto& region : result.loops_after.regions) {
+    if (std::abs(region.share) >= options.unexplained_share) {
+      result.unexplained_loops.push_back(region);
+      unexplained.push_back(describe(region));
+    }
+  }
+  result.verdict = verdict_of(result.named, unexplained);
+  return result;
+}
+
+}  // namespace ridefit::fitting::diagnose

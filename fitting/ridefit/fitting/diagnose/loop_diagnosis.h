@@ -1,0 +1,54 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ridefit/fitting/diagnose/diagnosis.h"
+#include "ridefit/fitting/hysteresis_record.h"
+#include "ridefit/simulate/strut_test_response.h"
+
+namespace ridefit::fitting::diagnose {
+
+// The diagnosis of strut rig tests: the same selection as for spectra (effect_selection.h), with
+// the hysteresis fit (hysteresis_fit.h) on force residuals and the loop map
+// (loop_disagreement.h); the gap is the held-out NRMSE in %.
+
+// Fits see only `training`; scores, maps and figures use `held_out`.
+struct LoopDiagnosisData {
+  std::vector<HysteresisRecord> training;
+  std::vector<HysteresisRecord> held_out;
+};
+
+// One record: its first half is fitted and its second half judges (the second half's
+// simulation starts at rest at its own first sample, as the first one does). Several: they
+// alternate, the 1st, 3rd, … are fitted and the 2nd, 4th, … judge.
+LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records);
+
+struct LoopDiagnosisOptions {
+  // The baseline's parameters every fit frees (fitting/strut_parameters.h names); empty = the
+  // default: damping_Ns_per_m, force_offset_N (a load cell's zero is never known exactly), and
+  // coulomb_force_N when the baseline has friction.
+  std::vector<std::string> baseline_free;
+  std::vector<std::string> effects;  // ids to try; empty = the whole library
+  int max_iterations = 50;           // per fit
+  simulate::StrutTestSolverOptions solver;
+  LoopDisagreementOptions map;
+  double min_held_out_improvement = 0.3;  // as DiagnosisOptions
+  double min_bic_drop = 20.0;
+  // A region of the final map counts as unexplained when its mean residual is at least this
+  // share of the measured force's RMS.
+  double unexplained_share = 0.03;
+  int max_effects = 2;
+  unsigned threads = 0;  // 0 = every core
+};
+
+// Fits the baseline strut (`baseline.strut`), maps its loops against the held-out records, tries
+// each effect that applies to loops, accepts the significant best, up to max_effects rounds.
+// The result's spectral fields stay empty; its loop fields and gap (NRMSE %) are filled.
+// InputError for an unknown effect id or free parameter.
+DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnosisData& data,
+                               const LoopDiagnosisOptions& options,
+                               const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace ridefit::fitting::diagnose
