@@ -10,6 +10,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "diagnose_common.h"
@@ -99,25 +100,50 @@ void draw_loops(const dx::DiagnosisResult& r, const dx::LoopDiagnosisData& data,
       v_mm_per_s[k] = 1e3 * (record.displacement_m[b] - record.displacement_m[a]) /
                       (record.time_s[b] - record.time_s[a]);
     }
-    for (const auto& [when, force, map] :
-         {std::tuple{"before", &r.before_force_N[i], &r.loops_before},
-          std::tuple{"after", &r.after_force_N[i], &r.loops_after}}) {
+    // Samples inside a region of `map` along `quantity`, as a points series over (x, y).
+    auto marked = [&](const dx::LoopDisagreementMap& map, const std::string& quantity,
+                      const std::vector<double>& along, const std::vector<double>& x,
+                      const std::vector<double>& y) {
+      io::PlotSeries points{"disagreement region", {}, {}, {}, {}, io::SeriesStyle::kPoints};
+      for (std::size_t k = 0; k < n; ++k) {
+        for (const auto& region : map.regions) {
+          if (region.record == record.source && region.quantity == quantity &&
+              along[k] >= region.low && along[k] <= region.high) {
+            points.x.push_back(x[k]);
+            points.y.push_back(y[k]);
+            break;
+          }
+        }
+      }
+      return points;
+    };
+    std::vector<double> v_m_per_s(n);
+    for (std::size_t k = 0; k < n; ++k) v_m_per_s[k] = 1e-3 * v_mm_per_s[k];
+    const std::tuple<const char*, const std::vector<double>*, const dx::LoopDisagreementMap*>
+        cases[] = {{"before", &r.before_force_N[i], &r.loops_before},
+                   {"after", &r.after_force_N[i], &r.loops_after}};
+    // Top row: the loops, force over displacement, regions along displacement marked.
+    for (const auto& [when, force, map] : cases) {
       io::PlotPanel panel = io::xy_panel(fmt::format("{}: {} (NRMSE {:.2f} %)", record.source, when,
                                                      map->records[i].nrmse_percent),
                                          "displacement [mm]", "force [N]");
       panel.series.push_back({"measured", x_mm, record.force_N, {}, {}, io::SeriesStyle::kLines});
       panel.series.push_back({"simulated", x_mm, *force, {}, {}, io::SeriesStyle::kLines});
+      auto points = marked(*map, "displacement", record.displacement_m, x_mm, *force);
+      if (!points.x.empty()) panel.series.push_back(std::move(points));
       figure.panels.push_back(std::move(panel));
     }
-    // The residual against velocity: where a friction law or a damper law is wrong it shows as
-    // a shape (a hump at small |v|, a slope, a step at reversal) rather than a cloud.
-    for (const auto& [when, force] :
-         {std::pair{"before", &r.before_force_N[i]}, std::pair{"after", &r.after_force_N[i]}}) {
+    // Bottom row: the residual over velocity, where a friction or damper law that is wrong shows
+    // as a shape (a hump at small |v|, a slope, a step at reversal) rather than a cloud; regions
+    // along velocity marked.
+    for (const auto& [when, force, map] : cases) {
       std::vector<double> residual(n);
       for (std::size_t k = 0; k < n; ++k) residual[k] = (*force)[k] - record.force_N[k];
       io::PlotPanel panel = io::xy_panel(fmt::format("{}: residual {}", record.source, when),
                                          "velocity [mm/s]", "simulated - measured force [N]");
       panel.series.push_back({"residual", v_mm_per_s, residual, {}, {}, io::SeriesStyle::kPoints});
+      auto points = marked(*map, "velocity", v_m_per_s, v_mm_per_s, residual);
+      if (!points.x.empty()) panel.series.push_back(std::move(points));
       figure.panels.push_back(std::move(panel));
     }
   }

@@ -64,6 +64,8 @@ Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string
   }
   selection.baseline = refine(current, free, bounds);
   ScoredFit reported = selection.baseline;
+  say(fmt::format("baseline fitted: held-out gap {:.2f} {}", selection.baseline.held_out_gap,
+                  options.gap_unit));
 
   for (int round = 0; round < options.max_effects; ++round) {
     DiagnosisRound this_round;

@@ -133,6 +133,7 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   selection_options.max_effects = options.max_effects;
   selection_options.threads = options.threads;
   selection_options.refine = false;  // the screening fit is the reported one
+  selection_options.gap_unit = "% NRMSE";
   DiagnosisModel start = baseline;
   start.kind = DataKind::kStrutLoops;
   const Selection selection =

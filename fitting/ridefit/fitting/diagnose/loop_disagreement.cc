@@ -23,9 +23,9 @@ std::vector<double> velocity_of(const HysteresisRecord& r) {
   return v;
 }
 
-// Regions along `quantity`: quantile bins, each judged by its mean residual against a standard
-// error that counts the residual's lag-1 correlation (a model error is smooth in time, so its
-// samples are far from independent).
+// Regions along `quantity`: quantile bins (half below zero, half above), each judged by its mean
+// residual against a standard error that counts the residual's lag-1 correlation (a model error is
+// smooth in time, so its samples are far from independent).
 void find_regions(const std::string& record, const std::string& name,
                   const std::vector<double>& quantity, const std::vector<double>& residual,
                   double force_rms, double lag1, const LoopDisagreementOptions& options,
@@ -42,8 +42,23 @@ void find_regions(const std::string& record, const std::string& name,
     int sign;
   };
   std::vector<Bin> judged;
-  for (std::size_t b = 0; b < bins; ++b) {
-    const std::size_t begin = b * n / bins, end = (b + 1) * n / bins;
+  // Half the bins on each side of zero, so a law that flips with the sign (friction at a
+  // reversal) cannot cancel itself in a bin straddling zero.
+  const auto negatives = static_cast<std::size_t>(
+      std::partition_point(order.begin(), order.end(),
+                           [&](std::size_t k) { return quantity[k] < 0.0; }) -
+      order.begin());
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  const std::size_t low_bins = negatives == 0 ? 0 : negatives == n ? bins : bins / 2;
+  for (std::size_t b = 0; b < low_bins; ++b) {
+    spans.emplace_back(b * negatives / low_bins, (b + 1) * negatives / low_bins);
+  }
+  const std::size_t high_bins = bins - low_bins;
+  for (std::size_t b = 0; b < high_bins; ++b) {
+    spans.emplace_back(negatives + b * (n - negatives) / high_bins,
+                       negatives + (b + 1) * (n - negatives) / high_bins);
+  }
+  for (const auto& [begin, end] : spans) {
     if (end <= begin + 1) continue;
     double sum = 0.0, squares = 0.0;
     for (std::size_t k = begin; k < end; ++k) sum += residual[order[k]];

@@ -11,7 +11,7 @@ namespace ridefit::fitting::diagnose {
 // disagreement map (disagreement_map.h). Residual = simulated − measured force.
 
 struct LoopDisagreementOptions {
-  int bins = 12;  // quantile bins of velocity and of displacement per record
+  int bins = 12;  // quantile bins of velocity and of displacement per record (half each side of 0)
   // A region must also move the force by at least this share of the measured force's RMS
   // (about its mean) on average.
   double min_region_share = 0.02;
