@@ -26,7 +26,7 @@ struct DiagnoseFlags {
   std::vector<double> band_Hz = {0.5, 30.0};
   double segment_s = 4.0;
   double screening_step_s = 2.5e-3;
-  double final_step_s = 1.25e-3;
+  double final_step_s = 0.7e-3;
   unsigned threads = 0;
   bool json = false;
   bool quiet = false;
