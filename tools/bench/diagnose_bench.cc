@@ -25,7 +25,7 @@ void BM_DiagnoseSeedCase60sFullLibrary(benchmark::State& state) {
       ridefit::fitting::load_psd_measurement(
           dataset("hidden/top_mount_stiffening_stick_slip_2.csv"))};
   dx::DiagnosisOptions options;
-  options.threads = 2;
+  options.selection.threads = 2;
   std::size_t fits = 0;
   bool named = false;
   for (auto _ : state) {
@@ -54,7 +54,7 @@ void BM_DiagnoseRigLoops20sFullLibrary(benchmark::State& state) {
   baseline.kind = dx::DataKind::kStrutLoops;
   baseline.strut = ridefit::fitting::strut_on_rig(model.make_model());
   dx::LoopDiagnosisOptions options;
-  options.threads = 2;
+  options.selection.threads = 2;
   bool named = false;
   for (auto _ : state) {
     const dx::DiagnosisResult r = dx::diagnose_loops(baseline, data, options);

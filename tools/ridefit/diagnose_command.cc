@@ -355,7 +355,7 @@ void run(const DiagnoseFlags& flags) {
   options.screening_step_s = flags.screening_step_s;
   options.final_step_s = flags.final_step_s;
   options.map.segment_s = flags.segment_s;
-  options.threads = flags.threads;
+  options.selection.threads = flags.threads;
 
   check_output_is_not_an_input(flags);
   const std::filesystem::path dir = flags.output_dir;

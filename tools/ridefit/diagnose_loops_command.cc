@@ -93,12 +93,11 @@ void draw_loops(const dx::DiagnosisResult& r, const dx::LoopDiagnosisData& data,
   for (std::size_t i = 0; i < data.held_out.size() && i < 2; ++i) {
     const auto& record = data.held_out[i];
     const std::size_t n = record.displacement_m.size();
+    const std::vector<double> v_m_per_s = dx::rig_velocity_m_per_s(record);
     std::vector<double> x_mm(n), v_mm_per_s(n);
     for (std::size_t k = 0; k < n; ++k) {
       x_mm[k] = 1e3 * record.displacement_m[k];
-      const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(k + 1, n - 1);
-      v_mm_per_s[k] = 1e3 * (record.displacement_m[b] - record.displacement_m[a]) /
-                      (record.time_s[b] - record.time_s[a]);
+      v_mm_per_s[k] = 1e3 * v_m_per_s[k];
     }
     // Samples inside a region of `map` along `quantity`, as a points series over (x, y).
     auto marked = [&](const dx::LoopDisagreementMap& map, const std::string& quantity,
@@ -117,8 +116,6 @@ void draw_loops(const dx::DiagnosisResult& r, const dx::LoopDiagnosisData& data,
       }
       return points;
     };
-    std::vector<double> v_m_per_s(n);
-    for (std::size_t k = 0; k < n; ++k) v_m_per_s[k] = 1e-3 * v_mm_per_s[k];
     const std::tuple<const char*, const std::vector<double>*, const dx::LoopDisagreementMap*>
         cases[] = {{"before", &r.before_force_N[i], &r.loops_before},
                    {"after", &r.after_force_N[i], &r.loops_after}};
@@ -157,9 +154,8 @@ std::pair<std::vector<std::pair<std::string, std::string>>, std::string> changed
   std::vector<std::pair<std::string, std::string>> keys;
   std::string rig_only;
   for (std::size_t i = 0; i < fitting::kStrutParameters.size(); ++i) {
-    auto a = before, b = after;
-    const double old_value = fitting::strut_parameter(a, i);
-    const double new_value = fitting::strut_parameter(b, i);
+    const double old_value = fitting::strut_parameter(before, i);
+    const double new_value = fitting::strut_parameter(after, i);
     if (old_value == new_value) continue;
     const std::string name(fitting::kStrutParameters[i].name);
     if (fitting::kStrutParameters[i].in_model_file) {
@@ -189,7 +185,7 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
     }
   }
   options.baseline_free = flags.free;
-  options.threads = flags.threads;
+  options.selection.threads = flags.threads;
 
   check_output_is_not_an_input(flags);
   const std::filesystem::path dir = flags.output_dir;

@@ -189,10 +189,9 @@ void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double
   for (const auto& [key, value] : d.set) truth["set"][key] = value;
   truth["effects"] = YAML::Node(YAML::NodeType::Sequence);
   for (const auto& id : d.effects) truth["effects"].push_back(id);
-  auto copy = strut;
   for (std::size_t p = 0; p < fitting::kStrutParameters.size(); ++p) {
     truth["strut"][std::string(fitting::kStrutParameters[p].name)] =
-        fitting::strut_parameter(copy, p);
+        fitting::strut_parameter(strut, p);
   }
   truth["sample_rate_Hz"] = d.sample_rate_Hz;
   truth["noise_N"] = d.noise_N;

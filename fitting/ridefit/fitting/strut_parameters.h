@@ -72,4 +72,10 @@ T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
   }
 }
 
+// Read-only: the same field of a const strut (the switch above written once).
+template <typename T>
+const T& strut_parameter(const model::StrutTestParameters<T>& p, std::size_t index) {
+  return strut_parameter(const_cast<model::StrutTestParameters<T>&>(p), index);
+}
+
 }  // namespace ridefit::fitting

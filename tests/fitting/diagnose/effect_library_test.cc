@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -21,6 +20,7 @@
 #include "ridefit/road/iso8608.h"
 #include "support/hidden_effect_record.h"
 #include "support/passat.h"
+#include "support/rig_record.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -204,21 +204,6 @@ INSTANTIATE_TEST_SUITE_P(Library, EffectGradient,
                                            "damper_asymmetry", "damper_digressive", "bump_stop",
                                            "tyre_lift_off"));
 
-// A rig record of the multisine the hidden rig datasets use (3, 1.5, 0.8 mm at 0.7, 2.3, 6.1 Hz),
-// 4 s at 500 Hz, the force of `strut` itself.
-HysteresisRecord rig_record(const model::StrutTestParameters<double>& strut) {
-  HysteresisRecord r;
-  r.source = "rig";
-  for (int k = 0; k <= 2000; ++k) {
-    const double t = k / 500.0, w = 2.0 * std::numbers::pi;
-    r.time_s.push_back(t);
-    r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
-                               0.0008 * std::sin(w * 6.1 * t));
-  }
-  r.force_N = *simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut);
-  return r;
-}
-
 class LoopEffectGradient : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LoopEffectGradient, HysteresisJacobianMatchesCentralDifferences) {
@@ -228,7 +213,7 @@ TEST_P(LoopEffectGradient, HysteresisJacobianMatchesCentralDifferences) {
                                                                           : rig_passat();
   ASSERT_EQ(effect.not_applicable(baseline), "");
   const DiagnosisModel with = apply(baseline, effect.change(baseline));
-  const HysteresisRecord record = rig_record(with.strut);
+  const HysteresisRecord record = testing::multisine_rig_record(with.strut, 4.0, 500.0);
   std::vector<std::string> free;
   for (const auto& p : effect.change(baseline).free) free.push_back(p.name);
   free.push_back("damping_Ns_per_m");

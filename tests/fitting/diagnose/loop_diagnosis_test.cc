@@ -7,39 +7,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "ridefit/fitting/strut_parameters.h"
 #include "support/passat.h"
+#include "support/rig_record.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
 
-// A rig record of the hidden datasets' multisine (3, 1.5, 0.8 mm at 0.7, 2.3, 6.1 Hz), 10 s at
-// 500 Hz, the force of `truth` plus Gaussian noise of 0.6 N (1 % of the Passat strut's Fc);
-// `phased` draws random phases (another test of the same strut).
+// 10 s at 500 Hz with 0.6 N of noise (1 % of the Passat strut's Fc); `phased`: another test.
 HysteresisRecord rig_record(const model::StrutTestParameters<double>& truth, unsigned seed,
                             bool phased) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
-  std::normal_distribution<double> noise(0.0, 0.6);
-  const double phase[3] = {phased ? angle(rng) : 0.0, phased ? angle(rng) : 0.0,
-                           phased ? angle(rng) : 0.0};
-  HysteresisRecord r;
-  r.source = phased ? "judged" : "fitted";
-  for (int k = 0; k <= 5000; ++k) {
-    const double t = k / 500.0, w = 2.0 * std::numbers::pi;
-    r.time_s.push_back(t);
-    r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t + phase[0]) +
-                               0.0015 * std::sin(w * 2.3 * t + phase[1]) +
-                               0.0008 * std::sin(w * 6.1 * t + phase[2]));
-  }
-  r.force_N = *simulate::strut_test_force<double>(r.time_s, r.displacement_m, truth, truth);
-  for (double& f : r.force_N) f += noise(rng);
-  return r;
+  return testing::multisine_rig_record(truth, 10.0, 500.0, 0.6, seed, phased);
 }
 
 LoopDiagnosisData records_of(const model::StrutTestParameters<double>& truth, unsigned seed) {

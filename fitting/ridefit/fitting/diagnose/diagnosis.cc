@@ -137,11 +137,8 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
                               const ParameterBounds& bounds, bool reported) {
     return fit_and_score(start, free, bounds, data, reported ? final_fit : screening, map_options);
   };
-  SelectionOptions selection_options;
-  selection_options.min_held_out_improvement = options.min_held_out_improvement;
-  selection_options.min_bic_drop = options.min_bic_drop;
-  selection_options.max_effects = options.max_effects;
-  selection_options.threads = options.threads;
+  SelectionOptions selection_options = options.selection;
+  selection_options.gap_unit = "dB";
   selection_options.refine = final_fit.steps_per_sample != screening.steps_per_sample;
   DiagnosisModel start = baseline;
   start.kind = DataKind::kVehicleSpectra;

@@ -42,17 +42,12 @@ struct DiagnosisOptions {
   double final_step_s = 0.7e-3;
   int screening_iterations = 25;  // at most, per screening fit
   DisagreementOptions map;        // the map's settings; its band follows `fit`
-  // An effect is accepted when it lowers the held-out cost by at least this share AND lowers
-  // the training BIC by at least min_bic_drop (so extra parameters cannot win by themselves).
-  double min_held_out_improvement = 0.3;
-  double min_bic_drop = 20.0;
+  SelectionOptions selection;     // significance, rounds, threads (gap_unit and refine set here)
   // A disagreement region left after the last accepted effect counts as unexplained when it is
   // inside the excitation band (not above it), its mean size is at least unexplained_dB and it
   // spans at least unexplained_width_Hz.
   double unexplained_dB = 1.5;
   double unexplained_width_Hz = 1.0;
-  int max_effects = 2;
-  unsigned threads = 0;  // 0 = every core
 };
 
 struct DiagnosisResult {
@@ -94,8 +89,8 @@ DiagnosisResult result_of(const Selection& selection, DataKind kind);
 // Fits the baseline, maps its disagreement with the held-out data, then tries each applicable
 // effect of the library (in parallel): adds it, refits every free parameter on the training
 // data, and scores it on the held-out data and by BIC. The best significant one is accepted and
-// the search repeats from it, up to max_effects rounds. `progress` (may be empty) receives one
-// line per finished step. InputError for an unknown effect id or a bad free parameter.
+// the search repeats from it, up to selection.max_effects rounds. `progress` (may be empty)
+// receives one line per finished step. InputError for an unknown effect id or a bad free parameter.
 DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& data,
                          const DiagnosisOptions& options,
                          const std::function<void(const std::string&)>& progress = {});

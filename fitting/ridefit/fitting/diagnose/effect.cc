@@ -40,8 +40,7 @@ double parameter_value(const model::QuarterCar& car, std::string_view name) {
 }
 
 double parameter_value(const model::StrutTestParameters<double>& strut, std::string_view name) {
-  model::StrutTestParameters<double> copy = strut;
-  return strut_parameter(copy, strut_parameter_index(name));
+  return strut_parameter(strut, strut_parameter_index(name));
 }
 
 DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change) {

@@ -73,10 +73,11 @@ struct SelectionOptions {
   double min_held_out_improvement = 0.3;
   double min_bic_drop = 20.0;
   int max_effects = 2;
-  unsigned threads = 0;         // effects fitted at once; 0 = every core
-  std::string gap_unit = "dB";  // of ScoredFit::held_out_gap, for the progress lines
-  // Refit the baseline and each accepted model with reported = true (when screening fits are
-  // coarser than reported ones).
+  unsigned threads = 0;  // effects fitted at once; 0 = every core
+  // Set by each kind's diagnosis: the unit of ScoredFit::held_out_gap (for the progress lines),
+  // and whether to refit the baseline and each accepted model with reported = true (when
+  // screening fits are coarser than reported ones).
+  std::string gap_unit = "dB";
   bool refine = true;
 };
 

@@ -80,7 +80,7 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   }
   s.held_out_cost = 0.5 * squares;
   s.held_out_signals = *forces;
-  s.held_out_gap = map_loop_disagreement(data.held_out, *forces, options.map).gap_percent;
+  s.held_out_gap = force_nrmse_percent(data.held_out, *forces);
   return s;
 }
 
@@ -127,11 +127,7 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& names,
                               const ParameterBounds& bounds,
                               bool) { return fit_and_score(start, names, bounds, data, options); };
-  SelectionOptions selection_options;
-  selection_options.min_held_out_improvement = options.min_held_out_improvement;
-  selection_options.min_bic_drop = options.min_bic_drop;
-  selection_options.max_effects = options.max_effects;
-  selection_options.threads = options.threads;
+  SelectionOptions selection_options = options.selection;
   selection_options.refine = false;  // the screening fit is the reported one
   selection_options.gap_unit = "% NRMSE";
   DiagnosisModel start = baseline;

@@ -34,18 +34,15 @@ struct LoopDiagnosisOptions {
   int max_iterations = 50;           // per fit
   simulate::StrutTestSolverOptions solver;
   LoopDisagreementOptions map;
-  double min_held_out_improvement = 0.3;  // as DiagnosisOptions
-  double min_bic_drop = 20.0;
+  SelectionOptions selection;  // significance, rounds, threads (gap_unit and refine set here)
   // A region of the final map counts as unexplained when its mean residual is at least this
   // share of the measured force's RMS.
   double unexplained_share = 0.03;
-  int max_effects = 2;
-  unsigned threads = 0;  // 0 = every core
 };
 
 // Fits the baseline strut (`baseline.strut`), maps its loops against the held-out records, tries
-// each effect that applies to loops, accepts the significant best, up to max_effects rounds.
-// The result's spectral fields stay empty; its loop fields and gap (NRMSE %) are filled.
+// each effect that applies to loops, accepts the significant best, up to selection.max_effects
+// rounds. The result's spectral fields stay empty; its loop fields and gap (NRMSE %) are filled.
 // InputError for an unknown effect id or free parameter.
 DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnosisData& data,
                                const LoopDiagnosisOptions& options,

@@ -12,17 +12,6 @@
 namespace ridefit::fitting::diagnose {
 namespace {
 
-// The rig's velocity by central differences (one-sided at the ends).
-std::vector<double> velocity_of(const HysteresisRecord& r) {
-  const std::size_t n = r.time_s.size();
-  std::vector<double> v(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(k + 1, n - 1);
-    v[k] = (r.displacement_m[b] - r.displacement_m[a]) / (r.time_s[b] - r.time_s[a]);
-  }
-  return v;
-}
-
 // Regions along `quantity`: quantile bins (half below zero, half above), each judged by its mean
 // residual against a standard error that counts the residual's lag-1 correlation (a model error is
 // smooth in time, so its samples are far from independent).
@@ -92,6 +81,32 @@ void find_regions(const std::string& record, const std::string& name,
 
 }  // namespace
 
+std::vector<double> rig_velocity_m_per_s(const HysteresisRecord& r) {
+  const std::size_t n = r.time_s.size();
+  std::vector<double> v(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(k + 1, n - 1);
+    v[k] = (r.displacement_m[b] - r.displacement_m[a]) / (r.time_s[b] - r.time_s[a]);
+  }
+  return v;
+}
+
+double force_nrmse_percent(const std::vector<HysteresisRecord>& records,
+                           const std::vector<std::vector<double>>& simulated_force_N) {
+  double residual = 0.0, spread = 0.0;
+  for (std::size_t i = 0; i < records.size() && i < simulated_force_N.size(); ++i) {
+    const auto& measured = records[i].force_N;
+    const auto& simulated = simulated_force_N[i];
+    double mean = 0.0;
+    for (double f : measured) mean += f / static_cast<double>(measured.size());
+    for (std::size_t k = 0; k < measured.size() && k < simulated.size(); ++k) {
+      residual += (simulated[k] - measured[k]) * (simulated[k] - measured[k]);
+      spread += (measured[k] - mean) * (measured[k] - mean);
+    }
+  }
+  return spread > 0.0 ? 100.0 * std::sqrt(residual / spread) : 0.0;
+}
+
 LoopDisagreementMap map_loop_disagreement(const std::vector<HysteresisRecord>& records,
                                           const std::vector<std::vector<double>>& simulated_force_N,
                                           const LoopDisagreementOptions& options) {
@@ -102,7 +117,6 @@ LoopDisagreementMap map_loop_disagreement(const std::vector<HysteresisRecord>& r
                     records.size(), simulated_force_N.size()));
   }
   LoopDisagreementMap map;
-  double residual_total = 0.0, spread_total = 0.0;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const HysteresisRecord& r = records[i];
     const std::vector<double>& sim = simulated_force_N[i];
@@ -126,8 +140,6 @@ LoopDisagreementMap map_loop_disagreement(const std::vector<HysteresisRecord>& r
       spread += (r.force_N[k] - mean) * (r.force_N[k] - mean);
       if (k > 0) lagged += residual[k] * residual[k - 1];
     }
-    residual_total += squares;
-    spread_total += spread;
     const auto n = static_cast<double>(sim.size());
     const double force_rms = std::sqrt(spread / n);
     LoopRecordDisagreement d;
@@ -139,12 +151,12 @@ LoopDisagreementMap map_loop_disagreement(const std::vector<HysteresisRecord>& r
     map.records.push_back(d);
     if (!(force_rms > 0.0) || !(squares > 0.0)) continue;
     const double lag1 = std::clamp(lagged / squares, -0.99, 0.99);
-    find_regions(r.source, "velocity", velocity_of(r), residual, force_rms, lag1, options,
+    find_regions(r.source, "velocity", rig_velocity_m_per_s(r), residual, force_rms, lag1, options,
                  map.regions);
     find_regions(r.source, "displacement", r.displacement_m, residual, force_rms, lag1, options,
                  map.regions);
   }
-  map.gap_percent = spread_total > 0.0 ? 100.0 * std::sqrt(residual_total / spread_total) : 0.0;
+  map.gap_percent = force_nrmse_percent(records, simulated_force_N);
   return map;
 }
 

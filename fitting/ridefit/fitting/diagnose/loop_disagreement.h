@@ -47,6 +47,14 @@ struct LoopDisagreementMap {
   double gap_percent = 0.0;
 };
 
+// The rig's velocity by central differences (one-sided at the ends), m/s.
+std::vector<double> rig_velocity_m_per_s(const HysteresisRecord& record);
+
+// The loop gap alone (LoopDisagreementMap::gap_percent), without the map's regions: what the
+// selection scores every trial with. Same preconditions as map_loop_disagreement.
+double force_nrmse_percent(const std::vector<HysteresisRecord>& records,
+                           const std::vector<std::vector<double>>& simulated_force_N);
+
 // The map of each record's measured force against `simulated_force_N` (one per record, same
 // length). InputError when counts or lengths differ or a simulated value is not finite.
 LoopDisagreementMap map_loop_disagreement(const std::vector<HysteresisRecord>& records,
