@@ -8,6 +8,7 @@
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/input_error.h"
+#include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {
 namespace {
@@ -27,7 +28,15 @@ HysteresisRecord dynamic(const model::StrutTestParameters<double>& p) {
     r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
                                0.0008 * std::sin(w * 6.1 * t));
   }
-  r.force_N = *simulate::strut_test_force<double>(r.time_s, r.displacement_m, p, p);
+  // CVODE at rtol 1e-10 on the analytic multisine: not the solver the fit uses.
+  r.force_N = testing::cvode_rig_force(
+      r.time_s,
+      [](double t) {
+        const double w = 2.0 * std::numbers::pi;
+        return 0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
+               0.0008 * std::sin(w * 6.1 * t);
+      },
+      p);
   return r;
 }
 

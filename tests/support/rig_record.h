@@ -7,7 +7,7 @@
 
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/model/strut_test.h"
-#include "ridefit/simulate/strut_test_response.h"
+#include "support/cvode_rig_record.h"
 
 namespace ridefit::testing {
 
@@ -34,7 +34,16 @@ inline fitting::HysteresisRecord multisine_rig_record(
                                0.0015 * std::sin(w * 2.3 * t + phase[1]) +
                                0.0008 * std::sin(w * 6.1 * t + phase[2]));
   }
-  r.force_N = *simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut);
+  // CVODE at rtol 1e-10 on the analytic multisine: not the solver the fits use.
+  r.force_N = cvode_rig_force(
+      r.time_s,
+      [&phase](double t) {
+        const double w = 2.0 * std::numbers::pi;
+        return 0.003 * std::sin(w * 0.7 * t + phase[0]) +
+               0.0015 * std::sin(w * 2.3 * t + phase[1]) +
+               0.0008 * std::sin(w * 6.1 * t + phase[2]);
+      },
+      strut);
   if (noise_N > 0.0) {
     for (double& f : r.force_N) f += noise(rng);
   }

@@ -1,7 +1,8 @@
 // Stick/slip quarter car (Passat corner, Fc = 60 N) over 60 s of ISO 8608 class A road at
-// 50 km/h, output at 1 kHz: CVODE at rtol 1e-6, and RK4 at the largest of a few steps that
-// matches CVODE's body-acceleration RMS within 0.5 % (rms_diff_pct). The road is generated once
-// outside the timed loop (tools/bench/road_bench.cc times the generation).
+// 50 km/h, output at 1 kHz: ridefit's ESDIRK and CVODE, both at rtol 1e-6 (rms_diff_pct: body
+// acceleration RMS against a CVODE run at rtol 1e-10, made once), and RK4 at the largest of a few
+// steps that matches CVODE's body-acceleration RMS within 0.5 % (rms_diff_pct). The road is
+// generated once outside the timed loop (tools/bench/road_bench.cc times the generation).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -49,8 +50,11 @@ ridefit::simulate::SimulationOptions options(Method method, double step_s) {
 
 void run(benchmark::State& state, Method method, double step_s) {
   const auto o = options(method, step_s);
-  const auto reference =
-      ridefit::simulate::simulate(passat(), class_a_road(), options(Method::kCvodeBdf, 0.0));
+  static const auto reference = [] {
+    auto reference_options = options(Method::kCvodeBdf, 0.0);
+    reference_options.integrator.relative_tolerance = 1e-10;
+    return ridefit::simulate::simulate(passat(), class_a_road(), reference_options);
+  }();
   ridefit::simulate::QuarterCarResponse response;
   for (auto _ : state) {
     response = ridefit::simulate::simulate(passat(), class_a_road(), o);
@@ -58,12 +62,20 @@ void run(benchmark::State& state, Method method, double step_s) {
   }
   state.counters["steps"] = static_cast<double>(response.statistics.steps);
   state.counters["rhs_evals"] = static_cast<double>(response.statistics.rhs_evaluations);
+  state.counters["jac_evals"] = static_cast<double>(response.statistics.jacobian_evaluations);
+  state.counters["error_fails"] = static_cast<double>(response.statistics.error_test_failures);
+  state.counters["newton_fails"] =
+      static_cast<double>(response.statistics.nonlinear_convergence_failures);
+  state.counters["events"] = static_cast<double>(response.statistics.events);
   state.counters["body_rms"] = ridefit::signal::rms(response.body_acc_m_per_s2);
   state.counters["rms_diff_pct"] =
       100.0 * std::abs(ridefit::signal::rms(response.body_acc_m_per_s2) /
                            ridefit::signal::rms(reference.body_acc_m_per_s2) -
                        1.0);
 }
+
+void BM_StickSlipClassA60s_Esdirk(benchmark::State& state) { run(state, Method::kEsdirk, 0.0); }
+BENCHMARK(BM_StickSlipClassA60s_Esdirk)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 void BM_StickSlipClassA60s_Cvode(benchmark::State& state) { run(state, Method::kCvodeBdf, 0.0); }
 BENCHMARK(BM_StickSlipClassA60s_Cvode)->Unit(benchmark::kMillisecond)->MinTime(2.0);

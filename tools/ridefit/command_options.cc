@@ -54,10 +54,18 @@ void ProgressReporter::finish() {
 }
 
 void SolverFlags::add_to(CLI::App& command) {
-  command.add_option("--method", method, "Integrator: cvode (adaptive BDF) or rk4 (fixed step)")
-      ->check(CLI::IsMember({"cvode", "rk4"}))
+  command
+      .add_option("--method", method,
+                  "Integrator: esdirk (ridefit's adaptive L-stable ESDIRK, the default), cvode "
+                  "(SUNDIALS' adaptive BDF, the reference) or rk4 (fixed step, the seed's ode4)")
+      ->check(CLI::IsMember({"esdirk", "cvode", "rk4"}))
       ->capture_default_str();
-  command.add_option("--rtol", relative_tolerance, "CVODE relative tolerance, in (0, 0.1]")
+  command
+      .add_option(
+          "--rtol", relative_tolerance,
+          "Relative tolerance of esdirk and cvode, in (0, 0.1]: each state's local error is "
+          "kept below rtol times its size plus rtol times its typical size (1 mm, "
+          "10 mm/s, Fc)")
       ->check(positive_number(""))
       ->capture_default_str();
   command.add_option("--step", fixed_step_s, "RK4 fixed step [s]")
@@ -67,7 +75,9 @@ void SolverFlags::add_to(CLI::App& command) {
 
 simulate::IntegratorOptions SolverFlags::options() const {
   simulate::IntegratorOptions options;
-  options.method = method == "rk4" ? simulate::Method::kArkodeRk4 : simulate::Method::kCvodeBdf;
+  options.method = method == "rk4"     ? simulate::Method::kArkodeRk4
+                   : method == "cvode" ? simulate::Method::kCvodeBdf
+                                       : simulate::Method::kEsdirk;
   options.relative_tolerance = relative_tolerance;
   options.fixed_step_s = fixed_step_s;
   return options;
@@ -108,7 +118,8 @@ nlohmann::json to_json(const simulate::SolverStatistics& statistics) {
           {"rhs_evaluations", statistics.rhs_evaluations},
           {"jacobian_evaluations", statistics.jacobian_evaluations},
           {"error_test_failures", statistics.error_test_failures},
-          {"nonlinear_convergence_failures", statistics.nonlinear_convergence_failures}};
+          {"nonlinear_convergence_failures", statistics.nonlinear_convergence_failures},
+          {"events", statistics.events}};
 }
 
 }  // namespace ridefit::cli

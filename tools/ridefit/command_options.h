@@ -14,7 +14,7 @@ namespace ridefit::cli {
 
 // Solver flags shared by every command that integrates: --method, --rtol, --step.
 struct SolverFlags {
-  std::string method = "cvode";
+  std::string method = "esdirk";
   double relative_tolerance = 1e-6;
   double fixed_step_s = 1e-4;
 

@@ -46,7 +46,7 @@ struct FitHysteresisFlags {
   std::vector<std::string> starts;
   std::string loss = "none";
   double loss_scale_N = 5.0;
-  int substeps = 4;
+  double relative_tolerance = 1e-7;
   int max_iterations = 100;
   std::vector<double> compression_mm;
   std::string output_file;
@@ -118,7 +118,7 @@ void run(const FitHysteresisFlags& flags) {
   options.bounds = parse_bounds(flags.bounds);
   options.loss = flags.loss;
   options.loss_scale_N = flags.loss_scale_N;
-  options.solver.substeps = flags.substeps;
+  options.solver.relative_tolerance = flags.relative_tolerance;
   options.max_iterations = flags.max_iterations;
   const auto start = start_from(model_file, flags.starts);
   const fitting::HysteresisFitResult fit = fitting::fit_hysteresis(records, start, options);
@@ -398,8 +398,10 @@ void register_fit(CLI::App& app) {
   command->add_option("--loss-scale", flags->loss_scale_N, "Residual [N] where the loss bends")
       ->check(positive_number("N"))
       ->capture_default_str();
-  command->add_option("--substeps", flags->substeps, "Implicit steps per sample interval")
-      ->check(CLI::Range(1, 100))
+  command
+      ->add_option("--rtol", flags->relative_tolerance,
+                   "Relative tolerance of the strut's adaptive ESDIRK integration, in (0, 0.1]")
+      ->check(CLI::Range(1e-12, 0.1))
       ->capture_default_str();
   command->add_option("--max-iterations", flags->max_iterations, "Solver iterations at most")
       ->check(CLI::Range(1, 10000))

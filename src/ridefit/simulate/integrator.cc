@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/simulate/esdirk_integrator.h"
 
 namespace ridefit::simulate {
 namespace {
@@ -113,7 +114,17 @@ ARKodeButcherTable classic_rk4_table() {
 
 }  // namespace
 
-const char* to_string(Method method) { return method == Method::kCvodeBdf ? "cvode" : "rk4"; }
+const char* to_string(Method method) {
+  switch (method) {
+    case Method::kEsdirk:
+      return "esdirk";
+    case Method::kCvodeBdf:
+      return "cvode";
+    case Method::kArkodeRk4:
+      return "rk4";
+  }
+  return "?";
+}
 
 namespace {
 
@@ -236,6 +247,9 @@ void run_rk4(const std::vector<double>& output_times_s, const IntegratorOptions&
 
 Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
                      const std::vector<double>& output_times_s, const IntegratorOptions& options) {
+  if (options.method == Method::kEsdirk) {
+    return integrate_esdirk(system, x0, output_times_s, options);
+  }
   const int n = system.size();
   if (static_cast<int>(x0.size()) != n) {
     throw InputError(

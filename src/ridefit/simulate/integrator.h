@@ -9,17 +9,21 @@
 namespace ridefit::simulate {
 
 enum class Method {
-  kCvodeBdf,   // SUNDIALS CVODE: variable-order BDF, Newton with the dense Jacobian
+  kEsdirk,     // ridefit's adaptive ESDIRK3(2)4L[2]SA (esdirk_integrator.h): the default
+  kCvodeBdf,   // SUNDIALS CVODE: variable-order BDF, Newton with the dense Jacobian (reference)
   kArkodeRk4,  // SUNDIALS ARKODE ERKStep: classic 4-stage RK4 at a fixed step (seed's ode4)
 };
 
 struct IntegratorOptions {
-  Method method = Method::kCvodeBdf;
-  double relative_tolerance = 1e-6;  // CVODE
-  double max_step_s = 0.0;           // CVODE; 0 = only the system's own limit
-  double fixed_step_s = 1e-4;        // RK4
-  // CVODE gives up (a RunError) after this many steps per simulated second, so a run whose
-  // steps collapse fails with a message instead of running for hours. The Passat corner on
+  Method method = Method::kEsdirk;
+  // ESDIRK and CVODE: the local error of each state is held below rtol·|x_i| + rtol·m_i, with
+  // m_i the state's typical magnitude (OdeSystem: 1 mm for positions, 10 mm/s for velocities,
+  // Fc for a friction force), so one number sets the accuracy of every state on its own scale.
+  double relative_tolerance = 1e-6;
+  double max_step_s = 0.0;     // ESDIRK and CVODE; 0 = only the system's own limit
+  double fixed_step_s = 1e-4;  // RK4
+  // ESDIRK and CVODE give up (a RunError) after this many steps per simulated second, so a run
+  // whose steps collapse fails with a message instead of running for hours. The Passat corner on
   // class A road at rtol 1e-6 needs about 4 000.
   double max_steps_per_s = 200'000;
   // Called after each output sample with its time (may be empty).
@@ -33,6 +37,7 @@ struct SolverStatistics {
   long jacobian_evaluations = 0;
   long error_test_failures = 0;
   long nonlinear_convergence_failures = 0;
+  long events = 0;  // ESDIRK: steps ended on a kink (a switching function's root)
 };
 
 // States at the requested output times.
@@ -52,7 +57,7 @@ constexpr double kMaxFixedSteps = 1e9;
 Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
                      const std::vector<double>& output_times_s, const IntegratorOptions& options);
 
-// "cvode" | "rk4".
+// "esdirk" | "cvode" | "rk4".
 const char* to_string(Method method);
 
 }  // namespace ridefit::simulate

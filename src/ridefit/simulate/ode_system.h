@@ -4,8 +4,8 @@ namespace ridefit::simulate {
 
 // A first-order system x' = f(t, x) as the integrators see it.
 //
-// Implementations are called from inside SUNDIALS: they must not throw. They return false
-// when the right-hand side cannot be evaluated (a non-finite value), which the integrator
+// Implementations are called from inside the integrators: they must not throw. They return
+// false when the right-hand side cannot be evaluated (a non-finite value), which the integrator
 // turns into a step-size cut or, if that does not help, a RunError naming the time.
 class OdeSystem {
  public:
@@ -19,6 +19,13 @@ class OdeSystem {
   virtual double typical_magnitude(int state_index) const = 0;
   // The longest step an adaptive solver may take (an input's feature size); 0 = no limit.
   virtual double max_step_s() const = 0;
+  // Switching functions: where one changes sign, f is not smooth (the Dahl law's kink at a
+  // damper reversal, a bump stop's contact, a damper's knee). The ESDIRK integrator ends a step
+  // on each such point, so that no step straddles a kink and the error control never thrashes
+  // on one. At most kMaxSwitchingFunctions.
+  static constexpr int kMaxSwitchingFunctions = 8;
+  virtual int switching_count() const { return 0; }
+  virtual void switching(double /*t_s*/, const double* /*x*/, double* /*g*/) const {}
 };
 
 }  // namespace ridefit::simulate

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <vector>
+
+#include "ridefit/simulate/esdirk_tableau.h"
+#include "ridefit/simulate/integrator.h"
+#include "ridefit/simulate/ode_system.h"
+
+namespace ridefit::simulate {
+
+// Every accepted step of an ESDIRK run, for the tangent replay (esdirk_tangents.h): its start
+// and length and the converged values of its implicit stages.
+struct EsdirkStepHistory {
+  int state_size = 0;
+  std::vector<double> start_s;
+  std::vector<double> length_s;
+  // (kStages − 1)·n values per step: stages 2..s, stage after stage.
+  std::vector<double> stages;
+  static constexpr int kImplicitStages = EsdirkTableau::kStages - 1;
+  std::size_t step_count() const { return start_s.size(); }
+  const double* stage(std::size_t step, int implicit_stage) const {
+    return stages.data() +
+           (step * kImplicitStages + static_cast<std::size_t>(implicit_stage)) * state_size;
+  }
+};
+
+// The adaptive ESDIRK3(2)4L[2]SA integrator (esdirk_tableau.h), ridefit's default.
+//
+// - Error control: the embedded solution's difference, filtered by (I − γhJ)⁻¹ (the stiff
+//   components' estimate, as in Hairer & Wanner's RADAU5), in the weighted RMS norm with
+//   rtol·|y| + rtol·typical_magnitude per state (OdeSystem); a PI step-size controller
+//   (Gustafsson: exponents 0.7/3 and 0.4/3, safety 0.9, growth at most 5, no growth straight
+//   after a rejection).
+// - Stages: simplified Newton on G = I − γhJ, the exact autodiff Jacobian J kept across steps
+//   while Newton converges quickly (refreshed after a slow or failed iteration, or 50 steps),
+//   the LU refactored when γh moves by more than 20 %.
+// - Kinks: after each attempted step the system's switching functions are compared at both
+//   ends; where one changes sign, its root is located on the step's Hermite interpolant and
+//   the step is retaken to end there, so no accepted step straddles a kink.
+// - Output: cubic Hermite interpolation between the step's ends (y and f at both: third order,
+//   as the method), so the step sequence never depends on the output grid.
+//
+// Fixed-size Eigen storage: no heap allocation inside the step loop. With `history`, every
+// accepted step is recorded for the tangent replay.
+Trajectory integrate_esdirk(const OdeSystem& system, const std::vector<double>& x0,
+                            const std::vector<double>& output_times_s,
+                            const IntegratorOptions& options, EsdirkStepHistory* history = nullptr);
+
+// The same method on a given step sequence (another run's history), each stage's Newton
+// converged to 1e-6 of the tolerance (or round-off), without error control or events: the discrete
+// map whose derivative replay_esdirk computes, for checking it by finite differences.
+Trajectory integrate_esdirk_on_steps(const OdeSystem& system, const std::vector<double>& x0,
+                                     const std::vector<double>& output_times_s,
+                                     const IntegratorOptions& options,
+                                     const EsdirkStepHistory& steps);
+
+}  // namespace ridefit::simulate

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "ridefit/model/strut_test.h"
+#include "ridefit/road/uniform_spline.h"
+#include "ridefit/simulate/ode_system.h"
+
+namespace ridefit::simulate {
+
+// How a rig record's displacement continues between its samples.
+enum class RigInterpolation {
+  // A C2 cubic spline (uniform records; error O(step⁴)) for smooth motions: linear
+  // interpolation would miss a 20 Hz motion sampled at 1 kHz by 0.2 % between samples and its
+  // velocity, which the damper feels, by several per cent.
+  kSpline,
+  // Straight lines between samples: exact for piecewise-linear commands (triangle waves), where
+  // a spline would overshoot at each corner, just where the pre-sliding stiffness shows.
+  kLinear,
+};
+
+// The displacement a rig imposed, as a function of time between its samples. Non-uniform
+// records (a step more than 0.1 % off the mean) and those under five samples are interpolated
+// linearly whatever is asked.
+class RigDisplacement {
+ public:
+  RigDisplacement(std::span<const double> time_s, std::span<const double> displacement_m,
+                  RigInterpolation interpolation = RigInterpolation::kSpline);
+  double at(double time_s) const;
+
+ private:
+  std::vector<double> time_s_;
+  std::vector<double> displacement_m_;
+  std::optional<road::UniformSpline> spline_;
+};
+
+// The strut on the rig (model::StrutTest) as a first-order system for the integrators:
+// states [z_c, F_f], the rig's displacement imposed. Its switching function is the damper's
+// sliding velocity (the Dahl law's kink), when the strut has friction.
+class StrutTestSystem : public OdeSystem {
+ public:
+  StrutTestSystem(const model::StrutTestParameters<double>& parameters,
+                  const RigDisplacement& displacement)
+      : p_(parameters), x_(displacement) {}
+  int size() const override { return 2; }
+  bool derivatives(double t_s, const double* y, double* ydot) const override;
+  bool jacobian(double t_s, const double* y, double* jacobian_column_major) const override;
+  // z_c on the scale of a rig stroke (1 mm), F_f on the scale of Fc.
+  double typical_magnitude(int state_index) const override;
+  double max_step_s() const override { return 0.0; }
+  int switching_count() const override { return p_.coulomb_force_N > 0.0 ? 1 : 0; }
+  void switching(double t_s, const double* y, double* g) const override;
+
+ private:
+  model::StrutTestParameters<double> p_;
+  const RigDisplacement& x_;
+};
+
+}  // namespace ridefit::simulate
