@@ -220,10 +220,7 @@ TEST(HysteresisFit, ConfidenceIntervalsCoverTheTruth) {
 // The Jacobian Ceres receives (Jets through the implicit solver) against central differences
 // of the same residuals, every residual and parameter; entries compared on the scale of their
 // column (most entries are exactly or nearly zero while the damper sticks).
-// DISABLED while open (issue 14): the ESDIRK replay tangents and central differences on the
-// frozen steps differ by up to 4e-5 (classic Dahl) and 1e-2 (Stribeck, d = 1) of the largest
-// derivative, above the 1e-5 this demands; the fits converge (strut_fit_recovery_test.cc).
-TEST(HysteresisFit, DISABLED_GradientCheckAgainstCentralDifferences) {
+TEST(HysteresisFit, GradientCheckAgainstCentralDifferences) {
   const auto data = triangle(truth(), 1);
   const std::vector<std::string> free = {"dahl_sigma0_N_per_m", "coulomb_force_N", "dahl_exponent",
                                          "top_mount_stiffness_N_per_m", "damping_Ns_per_m"};

@@ -94,10 +94,7 @@ TEST(StrutTestStribeck, FollowsCvodeOnTheSameEquations) {
 // d(force)/d(Fs, v_s, Fc, c) through the implicit steps against central differences of the same
 // discrete scheme: the Newton Jacobian's Stribeck terms are right (a wrong G would give wrong
 // implicit-function tangents).
-// DISABLED while open (issue 14): the ESDIRK replay tangents and central differences on the
-// frozen steps differ by up to 4e-5 (classic Dahl) and 1e-2 (Stribeck, d = 1) of the largest
-// derivative, above the 1e-5 this demands; the fits converge (strut_fit_recovery_test.cc).
-TEST(StrutTestStribeck, DISABLED_DerivativesMatchCentralDifferences) {
+TEST(StrutTestStribeck, DerivativesMatchCentralDifferences) {
   using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 4, 1>>;
   for (const double d : {1.0, 1.5}) {
     const auto p = stribeck_strut(d);
@@ -139,7 +136,7 @@ TEST(StrutTestStribeck, DISABLED_DerivativesMatchCentralDifferences) {
                        &plus.coulomb_force_N, &plus.damping_Ns_per_m};
       double* down[4] = {&minus.static_friction_force_N, &minus.stribeck_velocity_m_per_s,
                          &minus.coulomb_force_N, &minus.damping_Ns_per_m};
-      const double step = 1e-4 * *up[j];
+      const double step = 1e-5 * *up[j];
       *up[j] += step;
       *down[j] -= step;
       const auto f_up = frozen_force(plus);

@@ -1,8 +1,9 @@
 // Hysteresis fits on synthetic rig tests of seed 000's Passat strut (σ0 5e6 N/m, Fc 60 N, d 1,
 // top mount 488 N/mm, c 887 Ns/m): 3 free parameters (σ0, Fc, d) on 10 quasi-static cycles
 // (3 mm at 1 mm/s, 200 Hz; target ≤ 0.3 s) and 5 free parameters on a 60 s dynamic history at
-// 1 kHz (three sines; target ≤ 1 s). Data generated once outside the timed loop; each fit
-// starts from the same perturbed values.
+// 1 kHz (three sines; target ≤ 1 s). Data generated once outside the timed loop (by the same
+// ESDIRK strut solver: a timing, not an accuracy test; tests/fitting/strut_fit_recovery_test.cc
+// fits CVODE-made records); each fit starts from the same perturbed values.
 //   hysteresis_fit_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -38,7 +39,11 @@ HysteresisRecord record(bool dynamic) {
                                                 : -0.012 + 0.012 * phase);
     }
   }
-  r.force_N = *ridefit::simulate::strut_test_force<double>(r.time_s, r.displacement_m, p, p);
+  // The triangle is straight between samples: linear interpolation, as the fit uses below.
+  ridefit::simulate::StrutTestSolverOptions solver;
+  if (!dynamic) solver.interpolation = ridefit::simulate::RigInterpolation::kLinear;
+  r.force_N =
+      *ridefit::simulate::strut_test_force<double>(r.time_s, r.displacement_m, p, p, solver);
   return r;
 }
 
@@ -50,6 +55,7 @@ void BM_HysteresisFit3ParametersQuasiStatic(benchmark::State& state) {
   start.dahl_exponent = 1.5;
   ridefit::fitting::HysteresisFitOptions options;
   options.free = {"dahl_sigma0_N_per_m", "coulomb_force_N", "dahl_exponent"};
+  options.solver.interpolation = ridefit::simulate::RigInterpolation::kLinear;
   for (auto _ : state) {
     auto fit = ridefit::fitting::fit_hysteresis({data}, start, options);
     benchmark::DoNotOptimize(fit.final_cost);

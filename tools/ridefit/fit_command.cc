@@ -46,7 +46,8 @@ struct FitHysteresisFlags {
   std::vector<std::string> starts;
   std::string loss = "none";
   double loss_scale_N = 5.0;
-  double relative_tolerance = 1e-7;
+  double relative_tolerance = 1e-6;
+  std::string interpolation = "spline";
   int max_iterations = 100;
   std::vector<double> compression_mm;
   std::string output_file;
@@ -119,6 +120,9 @@ void run(const FitHysteresisFlags& flags) {
   options.loss = flags.loss;
   options.loss_scale_N = flags.loss_scale_N;
   options.solver.relative_tolerance = flags.relative_tolerance;
+  options.solver.interpolation = flags.interpolation == "linear"
+                                     ? simulate::RigInterpolation::kLinear
+                                     : simulate::RigInterpolation::kSpline;
   options.max_iterations = flags.max_iterations;
   const auto start = start_from(model_file, flags.starts);
   const fitting::HysteresisFitResult fit = fitting::fit_hysteresis(records, start, options);
@@ -402,6 +406,12 @@ void register_fit(CLI::App& app) {
       ->add_option("--rtol", flags->relative_tolerance,
                    "Relative tolerance of the strut's adaptive ESDIRK integration, in (0, 0.1]")
       ->check(CLI::Range(1e-12, 0.1))
+      ->capture_default_str();
+  command
+      ->add_option("--interpolation", flags->interpolation,
+                   "The displacement between samples: spline (C2, for smooth motions) or linear "
+                   "(for piecewise-linear commands such as triangle waves)")
+      ->check(CLI::IsMember({"spline", "linear"}))
       ->capture_default_str();
   command->add_option("--max-iterations", flags->max_iterations, "Solver iterations at most")
       ->check(CLI::Range(1, 10000))

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <type_traits>
+
 #include <cmath>
 
 namespace ridefit::model {
@@ -27,6 +29,10 @@ T signed_power(const T& s, const E& d) {
   using std::exp;
   using std::log;
   if (s == 0.0) return d == 1.0 ? s : T(0.0);
+  // The common d = 1 without exp and log, when d carries no derivative.
+  if constexpr (std::is_same_v<E, double>) {
+    if (d == 1.0) return s;
+  }
   const T magnitude = exp(d * log(abs(s)));
   return s < 0.0 ? T(-magnitude) : magnitude;
 }

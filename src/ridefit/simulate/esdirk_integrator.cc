@@ -19,25 +19,30 @@ constexpr double kGamma = Tableau::kGamma;
 
 // Newton stops when its estimated remaining error is this share of the error tolerance.
 constexpr double kNewtonShare = 0.05;
+constexpr double kNewtonShareRecorded = 1e-5;
 constexpr int kMaxNewtonIterations = 7;
 constexpr int kJacobianAge = 50;  // steps a Jacobian may serve before it is refreshed
 // A root in the first share of a step is left to the error control: a kink that close to the
 // step's start costs little accuracy, and shortening to it would only add a tiny step.
 constexpr double kEventMinShare = 0.05;
-// A located kink ends the step this share of it past the root, so the next step starts on the
-// new branch (its Jacobian then has the right slopes).
-constexpr double kEventOvershoot = 1e-3;
+// A located or predicted kink ends the step this share of it past the root, so the next step
+// starts on the new branch (its Jacobian then has the right slopes) and no stage sits on the
+// kink itself, where the computed map would not be differentiable in the parameters.
+constexpr double kEventOvershoot = 2e-2;
 
-template <int MaxN>
+// N: the state size at compile time (the quarter car's 4–6 states, the strut's 2), or
+// Eigen::Dynamic up to 24 (the half car): fixed sizes let Eigen unroll the small linear algebra.
+template <int N>
 class EsdirkSolver {
  public:
-  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, MaxN, 1>;
-  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, MaxN, MaxN>;
+  static constexpr int kMax = N == Eigen::Dynamic ? 24 : N;
+  using Vector = Eigen::Matrix<double, N, 1, 0, kMax, 1>;
+  using Matrix = Eigen::Matrix<double, N, N, 0, kMax, kMax>;
   using Switching =
       Eigen::Matrix<double, Eigen::Dynamic, 1, 0, OdeSystem::kMaxSwitchingFunctions, 1>;
 
   EsdirkSolver(const OdeSystem& system, const IntegratorOptions& options)
-      : system_(system), options_(options), n_(system.size()), lu_(n_) {
+      : system_(system), options_(options), n_(system.size()), lu_(n_), g_inverse_(n_, n_) {
     rtol_ = options.relative_tolerance;
     atol_.resize(n_);
     for (int i = 0; i < n_; ++i) atol_[i] = rtol_ * system.typical_magnitude(i);
@@ -78,9 +83,12 @@ class EsdirkSolver {
     double error_previous = 1e-4;  // the PI controller's memory
     bool rejected_last = false;
     Vector y_new(n_), z(n_), base(n_), error(n_), residual(n_), dz(n_);
-    Vector y_previous(n_), f_previous(n_);  // the last accepted step's start, for predictions
+    // A recorded run's stages are the points its tangents are taken at (esdirk_tangents.h):
+    // converged further, so that the tangent is that of the stage's solution.
+    const double newton_share = history != nullptr ? kNewtonShareRecorded : kNewtonShare;
+    // The last accepted step's start, for predictions (read only once h_previous > 0).
+    Vector y_previous = Vector::Zero(n_), f_previous = Vector::Zero(n_);
     double h_previous = 0.0;
-    double newton_rate_memory = 1e-3;
     long accepted = 0;
 
     while (t < t_end) {
@@ -112,8 +120,8 @@ class EsdirkSolver {
       if (g_count_ > 0 && h_previous > 0.0 && frozen == nullptr) {
         const double share =
             predicted_root(t, h, h_previous, y_previous, y, f_previous, k[0], g_start);
-        if (share >= kEventMinShare && share < 1.0) {
-          h *= share;
+        if (share >= kEventMinShare && share * (1.0 + kEventOvershoot) < 1.0) {
+          h *= share * (1.0 + kEventOvershoot);
           last = false;
         }
       }
@@ -138,7 +146,10 @@ class EsdirkSolver {
           z = i == 1 ? Vector(y + (Tableau::c[1] * h) * k[0])
                      : Vector(base + (kGamma * h) * k[i - 1]);
           const double t_stage = t + Tableau::c[i] * h;
-          double eta = std::pow(std::max(newton_rate_memory, 1e-16), 0.8);
+          // The first iterate counts as converged only when its update is already that small: a
+          // rate remembered from the last step misjudged stiff stretches where J moves fast (the
+          // Dahl exponent's |s|^(d−1) near s = 0), and the run drifted by tens of newtons.
+          double eta = 1.0;
           double previous_norm = 0.0;
           converged = false;
           for (int it = 0; it < (frozen == nullptr ? kMaxNewtonIterations : 50); ++it) {
@@ -148,7 +159,12 @@ class EsdirkSolver {
             }
             if (!rhs(t_stage, z, residual, stats)) break;
             residual = z - base - (kGamma * h) * residual;
-            dz = lu_.solve(residual);
+            // The stage equation's own residual must be within the tolerance too: with a stale
+            // G (the Dahl element's Jacobian changes by orders of magnitude between sticking and
+            // sliding) G⁻¹·r can be tiny while r is not, and the run accepted stages off by
+            // newtons.
+            const double residual_norm = norm(residual, w);
+            dz = solve(residual);
             z -= dz;
             const double dz_norm = norm(dz, w);
             if (!std::isfinite(dz_norm)) break;
@@ -158,13 +174,13 @@ class EsdirkSolver {
               if (rate >= 0.9 && frozen == nullptr) break;
               eta = rate / (1.0 - rate);
             }
-            // Frozen steps: converged to a millionth of the tolerance, or to round-off (the
-            // iteration stalls below 1e-4).
+            // Frozen steps: converged to round-off (1e-9 of the tolerance, or the iteration
+            // stalls below 1e-5 of it).
             const bool frozen_done =
                 frozen != nullptr &&
-                (dz_norm < 1e-6 || (it > 2 && dz_norm < 1e-4 && dz_norm >= 0.5 * previous_norm));
-            if ((frozen == nullptr && eta * dz_norm <= kNewtonShare) || frozen_done ||
-                dz_norm == 0.0) {
+                (dz_norm < 1e-9 || (it > 2 && dz_norm < 1e-5 && dz_norm >= 0.5 * previous_norm));
+            if ((frozen == nullptr && eta * dz_norm <= newton_share && residual_norm <= 1.0) ||
+                frozen_done || dz_norm == 0.0) {
               converged = true;
               break;
             }
@@ -176,7 +192,6 @@ class EsdirkSolver {
             if (history != nullptr) stage_buffer_[i - 1] = z;
           }
         }
-        newton_rate_memory = std::max(worst_rate, 1e-3);
         if (!converged) {
           ++stats.nonlinear_convergence_failures;
           if (frozen != nullptr) {
@@ -203,8 +218,8 @@ class EsdirkSolver {
             const double share = first_root(t, h, g_start, g_end, [&](double m) {
               return hermite(m, h, y, y_new, k[0], k[kS - 1]);
             });
-            if (share >= kEventMinShare && share < 1.0) {
-              h *= std::min(1.0, share * (1.0 + kEventOvershoot));
+            if (share >= kEventMinShare && share * (1.0 + kEventOvershoot) < 1.0) {
+              h *= share * (1.0 + kEventOvershoot);
               last = false;
               event_shortened = true;
               ++stats.events;
@@ -216,7 +231,7 @@ class EsdirkSolver {
         error.setZero();
         for (int j = 0; j < kS; ++j)
           error += (h * (Tableau::a[kS - 1][j] - Tableau::b_embedded[j])) * k[j];
-        error = lu_.solve(error);
+        error = solve(error);
         w = weights(y, y_new);
         const double error_norm = std::max(norm(error, w), 1e-10);
         if (frozen == nullptr && (!std::isfinite(error_norm) || error_norm > 1.0)) {
@@ -289,8 +304,19 @@ class EsdirkSolver {
 
   void factor(double h) {
     lu_.compute(Matrix::Identity(n_, n_) - (kGamma * h) * J_);
+    if constexpr (N != Eigen::Dynamic) g_inverse_ = lu_.inverse();
     h_lu_ = h;
     lu_valid_ = true;
+  }
+
+  // G⁻¹·v: an explicit inverse for the small fixed sizes (a matrix-vector product per Newton
+  // iteration is cheaper than two triangular solves), the LU otherwise.
+  Vector solve(const Vector& v) const {
+    if constexpr (N != Eigen::Dynamic) {
+      return g_inverse_ * v;
+    } else {
+      return lu_.solve(v);
+    }
   }
 
   Vector weights(const Vector& a, const Vector& b) const {
@@ -369,6 +395,7 @@ class EsdirkSolver {
   Vector atol_;
   Matrix J_;
   Eigen::PartialPivLU<Matrix> lu_;
+  Matrix g_inverse_;
   double h_lu_ = 0.0;
   bool lu_valid_ = false;
   bool have_jacobian_ = false;
@@ -377,11 +404,11 @@ class EsdirkSolver {
   Vector stage_buffer_[kS - 1];
 };
 
-template <int MaxN>
+template <int N>
 void run_with(const OdeSystem& system, const std::vector<double>& times,
               const IntegratorOptions& options, Trajectory& trajectory, EsdirkStepHistory* history,
               const EsdirkStepHistory* frozen) {
-  EsdirkSolver<MaxN> solver(system, options);
+  EsdirkSolver<N> solver(system, options);
   solver.run(times, trajectory, history, frozen);
 }
 
@@ -418,12 +445,22 @@ Trajectory run_esdirk(const OdeSystem& system, const std::vector<double>& x0,
     history->state_size = n;
   }
   if (output_times_s.size() == 1) return trajectory;
-  if (n <= 6) {
-    run_with<6>(system, output_times_s, options, trajectory, history, frozen);
-  } else if (n <= 24) {
-    run_with<24>(system, output_times_s, options, trajectory, history, frozen);
-  } else {
-    throw InputError(fmt::format("ESDIRK: {} states, at most 24 supported", n));
+  switch (n) {
+    case 2:
+      run_with<2>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 4:
+      run_with<4>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 5:
+      run_with<5>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 6:
+      run_with<6>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    default:
+      if (n > 24) throw InputError(fmt::format("ESDIRK: {} states, at most 24 supported", n));
+      run_with<Eigen::Dynamic>(system, output_times_s, options, trajectory, history, frozen);
   }
   return trajectory;
 }

@@ -47,7 +47,7 @@ Trajectory integrate_esdirk(const OdeSystem& system, const std::vector<double>& 
                             const IntegratorOptions& options, EsdirkStepHistory* history = nullptr);
 
 // The same method on a given step sequence (another run's history), each stage's Newton
-// converged to 1e-6 of the tolerance (or round-off), without error control or events: the discrete
+// converged to round-off, without error control or events: the discrete
 // map whose derivative replay_esdirk computes, for checking it by finite differences.
 Trajectory integrate_esdirk_on_steps(const OdeSystem& system, const std::vector<double>& x0,
                                      const std::vector<double>& output_times_s,

@@ -31,6 +31,11 @@ class RigDisplacement {
   double at(double time_s) const;
 
  private:
+  double interpolate(double time_s) const;
+  // Newton iterations ask for one stage time again and again. One RigDisplacement serves one
+  // integration (not shared between threads).
+  mutable double cached_time_s_ = -1e300;
+  mutable double cached_m_ = 0.0;
   std::vector<double> time_s_;
   std::vector<double> displacement_m_;
   std::optional<road::UniformSpline> spline_;

@@ -220,7 +220,11 @@ TEST_P(LoopEffectGradient, HysteresisJacobianMatchesCentralDifferences) {
   // Off the truth, so residuals are not zero.
   model::StrutTestParameters<double> at = with.strut;
   strut_parameter(at, strut_parameter_index(free[0])) *= 1.05;
-  std::unique_ptr<ceres::CostFunction> cost(make_hysteresis_cost(record, at, free));
+  // Central differences of the discrete map the Jacobian belongs to: this run's steps, frozen.
+  simulate::StrutTestSolverOptions solver;
+  const auto steps = simulate::strut_test_steps(record.time_s, record.displacement_m, at, solver);
+  solver.frozen_steps = &steps;
+  std::unique_ptr<ceres::CostFunction> cost(make_hysteresis_cost(record, at, free, solver));
   std::vector<double> x;
   for (const auto& name : free) x.push_back(strut_parameter(at, strut_parameter_index(name)));
   expect_exact_jacobian(*cost, x, free, 1e-6, 1e-4);
