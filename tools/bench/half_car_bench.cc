@@ -1,7 +1,7 @@
 // The 7-DOF half car of seed 001 with seed 000's strut (stick/slip, Fc = 60 N) on the front
-// axle, over 60 s of ISO 8608 class A road at 50 km/h, output at 1 kHz, CVODE at rtol 1e-6; and
-// the same car without friction (front strut in slip) for comparison. Road generated once,
-// outside the timed loop.
+// axle, over 60 s of ISO 8608 class A road at 50 km/h, output at 1 kHz, ridefit's ESDIRK (the
+// default) and CVODE, both at rtol 1e-6; and the same car without friction (front strut in slip).
+// Road generated once, outside the timed loop.
 //   half_car_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
@@ -32,10 +32,12 @@ const ridefit::road::RoadInput& class_a_road() {
   return road;
 }
 
-void run(benchmark::State& state, const std::string& damper_state) {
+void run(benchmark::State& state, const std::string& damper_state,
+         ridefit::simulate::Method method = ridefit::simulate::Method::kEsdirk) {
   const ridefit::model::HalfCar model = car(damper_state);
   ridefit::simulate::HalfCarSimulationOptions options;
   options.output_rate_Hz = 1000.0;
+  options.integrator.method = method;
   options.integrator.relative_tolerance = 1e-6;
   ridefit::simulate::HalfCarResponse response;
   for (auto _ : state) {
@@ -44,10 +46,19 @@ void run(benchmark::State& state, const std::string& damper_state) {
   }
   state.counters["steps"] = static_cast<double>(response.statistics.steps);
   state.counters["rhs_evals"] = static_cast<double>(response.statistics.rhs_evaluations);
+  state.counters["error_fails"] = static_cast<double>(response.statistics.error_test_failures);
+  state.counters["newton_fails"] =
+      static_cast<double>(response.statistics.nonlinear_convergence_failures);
+  state.counters["events"] = static_cast<double>(response.statistics.events);
 }
 
 void BM_HalfCarFrontStrutFriction60s(benchmark::State& state) { run(state, "stick_slip"); }
 BENCHMARK(BM_HalfCarFrontStrutFriction60s)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+void BM_HalfCarFrontStrutFriction60s_Cvode(benchmark::State& state) {
+  run(state, "stick_slip", ridefit::simulate::Method::kCvodeBdf);
+}
+BENCHMARK(BM_HalfCarFrontStrutFriction60s_Cvode)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 void BM_HalfCarFrontStrutSlip60s(benchmark::State& state) { run(state, "slip"); }
 BENCHMARK(BM_HalfCarFrontStrutSlip60s)->Unit(benchmark::kMillisecond)->MinTime(2.0);

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Whole-process comparison: `ridefit simulate` against what a Python user writes in a few lines.
 
 Runs `ridefit simulate MODEL EXCITATION` (the default ESDIRK, rtol 1e-6) as a process and times
@@ -27,6 +27,14 @@ from scipy.integrate import solve_ivp  # noqa: E402
 from scipy.interpolate import CubicSpline  # noqa: E402
 
 
+def _is_number(value):
+    try:
+        float(value)
+        return True
+    except ValueError:
+        return False
+
+
 def main():
     if len(sys.argv) != 4:
         sys.exit(__doc__)
@@ -46,7 +54,9 @@ def main():
 
     python_start = time.perf_counter()
     with open(model_file) as f:
-        p = yaml.safe_load(f)
+        # PyYAML reads 5.0e6 (no exponent sign) as a string: take every number as a float.
+        p = {k: float(v) for k, v in yaml.safe_load(f).items()
+             if isinstance(v, (int, float, str)) and _is_number(v)}
     ms, mu = p["sprung_mass_kg"], p["unsprung_mass_kg"]
     kt, ct = p["tyre_stiffness_N_per_m"], p["tyre_damping_Ns_per_m"]
     k_sp = 1.0 / (1.0 / p["spring_stiffness_N_per_m"] +

@@ -458,6 +458,21 @@ Trajectory run_esdirk(const OdeSystem& system, const std::vector<double>& x0,
     case 6:
       run_with<6>(system, output_times_s, options, trajectory, history, frozen);
       break;
+    case 14:  // the half car: passive axles, then with strut states
+      run_with<14>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 15:
+      run_with<15>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 16:
+      run_with<16>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 17:
+      run_with<17>(system, output_times_s, options, trajectory, history, frozen);
+      break;
+    case 18:
+      run_with<18>(system, output_times_s, options, trajectory, history, frozen);
+      break;
     default:
       if (n > 24) throw InputError(fmt::format("ESDIRK: {} states, at most 24 supported", n));
       run_with<Eigen::Dynamic>(system, output_times_s, options, trajectory, history, frozen);

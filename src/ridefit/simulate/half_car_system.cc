@@ -49,6 +49,43 @@ double rear_delay_s(const road::RoadInput& road, double wheelbase_m,
   return wheelbase_m / *speed;
 }
 
+HalfCarSystem::HalfCarSystem(const model::HalfCar& car, const AxleRoadInput& roads)
+    : car_(car), roads_(roads) {
+  const auto& p = car.parameters();
+  int internal = 2 * model::kHalfCarDofs;
+  auto add = [&](const model::AxleTopology& top, const auto& axle, double arm, int wheel) {
+    const bool split = axle.compression_to_rebound_ratio != 1.0;
+    if (top.suspension == model::AxleSuspension::kStrut) {
+      const bool friction =
+          top.damper_state == model::DamperState::kStickSlip && axle.coulomb_force_N > 0.0;
+      if (top.damper_state != model::DamperState::kStick && (friction || split)) {
+        switches_.push_back({internal, 0.0, 0});
+      }
+    } else if (split) {
+      switches_.push_back({-1, arm, wheel});
+    }
+    internal += top.internal_state_count();
+  };
+  add(car.topology().front, p.front, p.front_axle_distance_m, model::kFrontWheel);
+  add(car.topology().rear, p.rear, -p.rear_axle_distance_m, model::kRearWheel);
+}
+
+void HalfCarSystem::switching(double t_s, const double* x, double* g) const {
+  double xdot[kMaxStates];
+  bool rates = false;
+  for (std::size_t j = 0; j < switches_.size(); ++j) {
+    const Switch& s = switches_[j];
+    if (s.state >= 0) {
+      if (!rates) car_.derivatives(x, roads_.at(t_s), xdot);
+      rates = true;
+      g[j] = xdot[s.state];
+    } else {
+      const double* v = x + model::kHalfCarDofs;
+      g[j] = v[model::kBodyHeave] + s.arm_m * v[model::kBodyPitch] - v[s.wheel];
+    }
+  }
+}
+
 bool HalfCarSystem::derivatives(double t_s, const double* x, double* xdot) const {
   car_.derivatives(x, roads_.at(t_s), xdot);
   return std::all_of(xdot, xdot + size(), [](double v) { return std::isfinite(v); });

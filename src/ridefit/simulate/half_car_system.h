@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "ridefit/model/half_car.h"
 #include "ridefit/road/road_input.h"
 #include "ridefit/simulate/ode_system.h"
@@ -30,15 +32,27 @@ double rear_delay_s(const road::RoadInput& road, double wheelbase_m,
 // by forward-mode autodiff (Eigen's AutoDiffScalar), as for the quarter car.
 class HalfCarSystem : public OdeSystem {
  public:
-  HalfCarSystem(const model::HalfCar& car, const AxleRoadInput& roads) : car_(car), roads_(roads) {}
+  HalfCarSystem(const model::HalfCar& car, const AxleRoadInput& roads);
 
   int size() const override { return car_.state_size(); }
   bool derivatives(double t_s, const double* x, double* xdot) const override;
   bool jacobian(double t_s, const double* x, double* jacobian_column_major) const override;
   double typical_magnitude(int state_index) const override;
   double max_step_s() const override { return roads_.road().max_step_s(); }
+  // The kinks: each strut damper's own rate where it has Dahl friction or a compression/rebound
+  // split, each passive damper's travel rate where it has the split.
+  int switching_count() const override { return static_cast<int>(switches_.size()); }
+  void switching(double t_s, const double* x, double* g) const override;
 
  private:
+  // A switching function: the rate of state `state` (a strut's damper deflection), or with
+  // state < 0 the travel rate of the passive axle at `arm` over wheel `wheel`.
+  struct Switch {
+    int state = -1;
+    double arm_m = 0.0;
+    int wheel = 0;
+  };
+  std::vector<Switch> switches_;
   const model::HalfCar& car_;
   const AxleRoadInput& roads_;
 };

@@ -36,6 +36,10 @@ struct StrutTestSolverOptions {
   // random-displacement record is within 0.003 % (RMS) of CVODE at 1e-10 (a test asks 0.05 %).
   double relative_tolerance = 1e-6;
   RigInterpolation interpolation = RigInterpolation::kSpline;
+  // A run that needs more steps than this per simulated second is given up (no value): a fit
+  // exploring an extreme corner (a Stribeck velocity of micrometres per second, say) would
+  // otherwise spend minutes on one evaluation. Ordinary records take 1 000–3 000.
+  double max_steps_per_s = 10'000;
   // Run on these steps (another run's history: the discrete map with its step sequence frozen,
   // for checking the tangents by finite differences) instead of choosing them; may be null.
   const EsdirkStepHistory* frozen_steps = nullptr;
@@ -50,6 +54,7 @@ inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
   IntegratorOptions integrator;
   integrator.relative_tolerance = options.relative_tolerance;
+  integrator.max_steps_per_s = options.max_steps_per_s;
   EsdirkStepHistory history;
   integrate_esdirk(StrutTestSystem(values, x), {displacement_m[0], 0.0},
                    std::vector<double>(time_s.begin(), time_s.end()), integrator, &history);
@@ -72,6 +77,7 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
   const StrutTestSystem system(values, x);
   IntegratorOptions integrator;
   integrator.relative_tolerance = options.relative_tolerance;
+  integrator.max_steps_per_s = options.max_steps_per_s;
   const std::vector<double> times(time_s.begin(), time_s.end());
   const std::vector<double> y0 = {displacement_m[0], 0.0};
   try {
