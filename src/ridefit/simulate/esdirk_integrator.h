@@ -32,16 +32,20 @@ struct EsdirkStepHistory {
 //   (Gustafsson: exponents 0.7/3 and 0.4/3, safety 0.9, growth at most 5, no growth straight
 //   after a rejection).
 // - Stages: simplified Newton on G = I − γhJ, the exact autodiff Jacobian J kept across steps
-//   while Newton converges quickly (refreshed after a slow or failed iteration, or 50 steps),
-//   the LU refactored when γh moves by more than 20 %.
-// - Kinks: after each attempted step the system's switching functions are compared at both
-//   ends; where one changes sign, its root is located on the step's Hermite interpolant and
-//   the step is retaken to end there, so no accepted step straddles a kink.
+//   while Newton converges quickly (refreshed after a slow iteration, every 50 steps, and at the
+//   Newton iterate after a failure), the factorisation redone when γh moves by more than 20 %.
+//   A stage counts as converged when both the update and the stage equation's residual are
+//   within the tolerance (a stale G can make the update small while the residual is not).
+// - Kinks: the system's switching functions are continued on the last step's interpolant to
+//   predict a kink ahead, and compared at both ends of each attempted step to locate one inside
+//   it (Illinois); the step then ends 2 % of its length past the root, so no accepted step
+//   straddles a kink and no stage sits on one.
 // - Output: cubic Hermite interpolation between the step's ends (y and f at both: third order,
 //   as the method), so the step sequence never depends on the output grid.
 //
-// Fixed-size Eigen storage: no heap allocation inside the step loop. With `history`, every
-// accepted step is recorded for the tangent replay.
+// Fixed-size Eigen storage (per state count): no heap allocation inside the step loop. With
+// `history`, every accepted step is recorded for the tangent replay (its stages then converged
+// to 1e-5 of the tolerance). Gives up (RunError) past max_steps_per_s steps per simulated second.
 Trajectory integrate_esdirk(const OdeSystem& system, const std::vector<double>& x0,
                             const std::vector<double>& output_times_s,
                             const IntegratorOptions& options, EsdirkStepHistory* history = nullptr);
