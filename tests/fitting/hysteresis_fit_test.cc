@@ -57,23 +57,7 @@ HysteresisRecord triangle(const model::StrutTestParameters<double>& p, int cycle
 
 // A dynamic history: three sines (0.7, 2.3 and 6.1 Hz) for 20 s at 1 kHz.
 HysteresisRecord dynamic(const model::StrutTestParameters<double>& p) {
-  HysteresisRecord r;
-  r.source = "dynamic";
-  for (int k = 0; k <= 20000; ++k) {
-    const double t = k * 1e-3, w = 2.0 * std::numbers::pi;
-    r.time_s.push_back(t);
-    r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
-                               0.0008 * std::sin(w * 6.1 * t));
-  }
-  r.force_N = testing::cvode_rig_force(
-      r.time_s,
-      [](double t) {
-        const double w = 2.0 * std::numbers::pi;
-        return 0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
-               0.0008 * std::sin(w * 6.1 * t);
-      },
-      p);
-  return r;
+  return testing::cvode_rig_record(p, testing::ThreeSines{}, 20.0, 1000.0, "dynamic");
 }
 
 TEST(HysteresisFit, QuasiStaticTriangleRecoversTheFrictionWithinHalfAPercent) {
@@ -228,12 +212,7 @@ TEST(HysteresisFit, GradientCheckAgainstCentralDifferences) {
   // frozen (strut_test_response.h).
   simulate::StrutTestSolverOptions solver;
   solver.interpolation = kTriangle;
-  const simulate::RigDisplacement rig(data.time_s, data.displacement_m, kTriangle);
-  simulate::IntegratorOptions integrator;
-  integrator.relative_tolerance = solver.relative_tolerance;
-  simulate::EsdirkStepHistory steps;
-  simulate::integrate_esdirk(simulate::StrutTestSystem(truth(), rig), {data.displacement_m[0], 0.0},
-                             data.time_s, integrator, &steps);
+  const auto steps = simulate::strut_test_steps(data.time_s, data.displacement_m, truth(), solver);
   solver.frozen_steps = &steps;
   std::unique_ptr<ceres::CostFunction> cost(make_hysteresis_cost(data, truth(), free, solver));
   double values[5] = {5e6, 60.0, 1.0, 488000.0, 887.0};

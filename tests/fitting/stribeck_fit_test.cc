@@ -20,24 +20,8 @@ model::StrutTestParameters<double> truth() {
 
 // Three sines (0.7, 2.3 and 6.1 Hz) for 10 s at 1 kHz: damper speeds from 0 to ~60 mm/s.
 HysteresisRecord dynamic(const model::StrutTestParameters<double>& p) {
-  HysteresisRecord r;
-  r.source = "dynamic";
-  for (int k = 0; k <= 10000; ++k) {
-    const double t = k * 1e-3, w = 2.0 * std::numbers::pi;
-    r.time_s.push_back(t);
-    r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
-                               0.0008 * std::sin(w * 6.1 * t));
-  }
   // CVODE at rtol 1e-10 on the analytic multisine: not the solver the fit uses.
-  r.force_N = testing::cvode_rig_force(
-      r.time_s,
-      [](double t) {
-        const double w = 2.0 * std::numbers::pi;
-        return 0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
-               0.0008 * std::sin(w * 6.1 * t);
-      },
-      p);
-  return r;
+  return testing::cvode_rig_record(p, testing::ThreeSines{}, 10.0, 1000.0, "dynamic");
 }
 
 TEST(StribeckFit, TheNewParametersAreFittableByName) {

@@ -45,14 +45,7 @@ model::StrutTestParameters<double> set_b() { return {8e5, 30.0, 0.8, 400e3, 2600
 
 HysteresisRecord cvode_record(const model::StrutTestParameters<double>& p, double duration_s,
                               double noise_share = 0.0, unsigned seed = 3) {
-  const RandomDisplacement x(seed);
-  HysteresisRecord r;
-  r.source = "cvode";
-  for (int k = 0; k <= static_cast<int>(duration_s * 1000.0); ++k) {
-    r.time_s.push_back(k * 1e-3);
-    r.displacement_m.push_back(x(r.time_s.back()));
-  }
-  r.force_N = testing::cvode_rig_force(r.time_s, x, p);
+  auto r = testing::cvode_rig_record(p, RandomDisplacement(seed), duration_s, 1000.0, "cvode");
   if (noise_share > 0.0) {
     std::mt19937_64 rng(seed + 100);
     std::normal_distribution<double> noise(0.0, noise_share * signal::rms(r.force_N));

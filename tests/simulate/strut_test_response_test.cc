@@ -13,6 +13,7 @@
 #include "ridefit/simulate/integrator.h"
 #include "ridefit/simulate/ode_system.h"
 #include "ridefit/simulate/strut_test_system.h"
+#include "support/cvode_rig_record.h"
 
 namespace ridefit::simulate {
 namespace {
@@ -24,37 +25,6 @@ model::StrutTestParameters<double> passat_strut() {
 
 double displacement(double t) { return 0.003 * std::sin(2.0 * std::numbers::pi * 1.0 * t); }
 
-class StrutTestOde : public OdeSystem {
- public:
-  explicit StrutTestOde(const model::StrutTestParameters<double>& p) : p_(p) {}
-  int size() const override { return 2; }
-  double max_step_s() const override { return 0.0; }
-  bool derivatives(double t, const double* y, double* ydot) const override {
-    model::StrutTest::derivatives(y, displacement(t), p_, ydot);
-    return true;
-  }
-  bool jacobian(double t, const double* y, double* j) const override {
-    using AD = Eigen::AutoDiffScalar<Eigen::Vector2d>;
-    AD ya[2] = {AD(y[0], 2, 0), AD(y[1], 2, 1)};
-    AD f[2];
-    const model::StrutTestParameters<AD> p{
-        AD(p_.dahl_sigma0_N_per_m),         AD(p_.coulomb_force_N),  AD(p_.dahl_exponent),
-        AD(p_.top_mount_stiffness_N_per_m), AD(p_.damping_Ns_per_m), AD(p_.gas_force_N),
-        AD(p_.gas_stiffness_N_per_m),       AD(p_.force_offset_N)};
-    model::StrutTest::derivatives(ya, AD(displacement(t)), p, f);
-    for (int row = 0; row < 2; ++row) {
-      for (int col = 0; col < 2; ++col) {
-        j[col * 2 + row] = f[row].derivatives().size() == 2 ? f[row].derivatives()[col] : 0.0;
-      }
-    }
-    return true;
-  }
-  double typical_magnitude(int i) const override { return i == 0 ? 1e-6 : 1.0; }
-
- private:
-  model::StrutTestParameters<double> p_;
-};
-
 TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
   const auto p = passat_strut();
   std::vector<double> t, x;
@@ -62,15 +32,12 @@ TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
     t.push_back(k * 1e-3);
     x.push_back(displacement(t.back()));
   }
-  IntegratorOptions options;
-  options.method = Method::kCvodeBdf;
-  options.relative_tolerance = 1e-11;
-  const Trajectory reference = integrate(StrutTestOde(p), {x[0], 0.0}, t, options);
+  const std::vector<double> reference = testing::cvode_rig_force(t, displacement, p);
   const auto force = strut_test_force<double>(t, x, p, p);
   ASSERT_TRUE(force.has_value());
   double worst = 0.0;
   for (std::size_t k = 1000; k < t.size(); ++k) {  // after the first cycle
-    const double expected = model::StrutTest::force_N(reference.state_at(k), x[k], p);
+    const double expected = reference[k];
     worst = std::max(worst, std::abs((*force)[k] - expected));
   }
   // ESDIRK at its default tolerance: within 0.3 N (0.5 % of Fc) at the worst sample of the
@@ -82,7 +49,7 @@ TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
   const auto finer = strut_test_force<double>(t, x, p, p, fine);
   double worst_fine = 0.0;
   for (std::size_t k = 1000; k < t.size(); ++k) {
-    const double expected = model::StrutTest::force_N(reference.state_at(k), x[k], p);
+    const double expected = reference[k];
     worst_fine = std::max(worst_fine, std::abs((*finer)[k] - expected));
   }
   EXPECT_LT(worst_fine, 0.2 * worst);
@@ -113,19 +80,11 @@ TEST(StrutTestResponse, DerivativesMatchCentralDifferencesOnFrozenSteps) {
   const auto jets = strut_test_force<AD>(t, x, pa, p);
   ASSERT_TRUE(jets.has_value());
   // The unperturbed run's steps.
-  const RigDisplacement rig(t, x);
-  IntegratorOptions options;
-  options.relative_tolerance = StrutTestSolverOptions{}.relative_tolerance;
-  EsdirkStepHistory steps;
-  integrate_esdirk(StrutTestSystem(p, rig), {x[0], 0.0}, t, options, &steps);
+  StrutTestSolverOptions frozen;
+  const EsdirkStepHistory steps = strut_test_steps(t, x, p, frozen);
+  frozen.frozen_steps = &steps;
   auto frozen_force = [&](const model::StrutTestParameters<double>& q) {
-    const StrutTestSystem system(q, rig);
-    const Trajectory tr = integrate_esdirk_on_steps(system, {x[0], 0.0}, t, options, steps);
-    std::vector<double> f;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-      f.push_back(model::StrutTest::force_N(tr.state_at(k), x[k], q));
-    }
-    return f;
+    return *strut_test_force<double>(t, x, q, q, frozen);
   };
   for (int j = 0; j < 5; ++j) {
     auto plus = p, minus = p;

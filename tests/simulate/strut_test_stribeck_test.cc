@@ -15,6 +15,7 @@
 #include "ridefit/simulate/ode_system.h"
 #include "ridefit/simulate/strut_test_response.h"
 #include "ridefit/simulate/strut_test_system.h"
+#include "support/cvode_rig_record.h"
 
 namespace ridefit::simulate {
 namespace {
@@ -25,38 +26,6 @@ model::StrutTestParameters<double> stribeck_strut(double dahl_exponent = 1.0) {
   return {5e6, 60.0, dahl_exponent, 488000.0, 887.0, 0.0, 0.0, 0.0, 90.0, 0.005};
 }
 
-class StrutOde : public OdeSystem {
- public:
-  explicit StrutOde(const model::StrutTestParameters<double>& p) : p_(p) {}
-  int size() const override { return 2; }
-  double max_step_s() const override { return 1e-3; }
-  bool derivatives(double t, const double* y, double* ydot) const override {
-    model::StrutTest::derivatives(y, std::sin(6.0 * t) * 3e-3, p_, ydot);
-    return true;
-  }
-  bool jacobian(double t, const double* y, double* j) const override {
-    using AD = Eigen::AutoDiffScalar<Eigen::Vector2d>;
-    AD ya[2] = {AD(y[0], 2, 0), AD(y[1], 2, 1)};
-    AD f[2];
-    const model::StrutTestParameters<AD> p{
-        AD(p_.dahl_sigma0_N_per_m),         AD(p_.coulomb_force_N),  AD(p_.dahl_exponent),
-        AD(p_.top_mount_stiffness_N_per_m), AD(p_.damping_Ns_per_m), AD(p_.gas_force_N),
-        AD(p_.gas_stiffness_N_per_m),       AD(p_.force_offset_N),   AD(p_.static_friction_force_N),
-        AD(p_.stribeck_velocity_m_per_s)};
-    model::StrutTest::derivatives(ya, AD(std::sin(6.0 * t) * 3e-3), p, f);
-    for (int row = 0; row < 2; ++row) {
-      for (int col = 0; col < 2; ++col) {
-        j[col * 2 + row] = f[row].derivatives().size() == 2 ? f[row].derivatives()[col] : 0.0;
-      }
-    }
-    return true;
-  }
-  double typical_magnitude(int i) const override { return i == 0 ? 1e-6 : 1.0; }
-
- private:
-  model::StrutTestParameters<double> p_;
-};
-
 TEST(StrutTestStribeck, FollowsCvodeOnTheSameEquations) {
   for (const double d : {1.0, 1.5}) {
     const auto p = stribeck_strut(d);
@@ -65,10 +34,8 @@ TEST(StrutTestStribeck, FollowsCvodeOnTheSameEquations) {
       t.push_back(k * 1e-3);
       x.push_back(std::sin(6.0 * t.back()) * 3e-3);
     }
-    IntegratorOptions options;
-    options.method = Method::kCvodeBdf;
-    options.relative_tolerance = 1e-11;
-    const Trajectory reference = integrate(StrutOde(p), {x[0], 0.0}, t, options);
+    const std::vector<double> reference = testing::cvode_rig_force(
+        t, [](double time) { return std::sin(6.0 * time) * 3e-3; }, p);
     // ESDIRK: the error falls with the tolerance; at the default it is within 2 % of Fc even at
     // the sharp breakaway after each reversal (the spline between the 1 kHz samples adds its
     // own small part there).
@@ -80,8 +47,7 @@ TEST(StrutTestStribeck, FollowsCvodeOnTheSameEquations) {
       ASSERT_TRUE(force.has_value());
       double error = 0.0;
       for (std::size_t k = 1000; k < t.size(); ++k) {
-        error = std::max(error, std::abs((*force)[k] - model::StrutTest::force_N(
-                                                           reference.state_at(k), x[k], p)));
+        error = std::max(error, std::abs((*force)[k] - reference[k]));
       }
       worst.push_back(error);
     }
@@ -116,19 +82,11 @@ TEST(StrutTestStribeck, DerivativesMatchCentralDifferences) {
     const auto jets = strut_test_force<AD>(t, x, pa, p);
     ASSERT_TRUE(jets.has_value());
     // Central differences of the same discrete map: the unperturbed run's steps, frozen.
-    const RigDisplacement rig(t, x);
-    IntegratorOptions options;
-    options.relative_tolerance = StrutTestSolverOptions{}.relative_tolerance;
-    EsdirkStepHistory steps;
-    integrate_esdirk(StrutTestSystem(p, rig), {x[0], 0.0}, t, options, &steps);
+    StrutTestSolverOptions frozen;
+    const EsdirkStepHistory steps = strut_test_steps(t, x, p, frozen);
+    frozen.frozen_steps = &steps;
     auto frozen_force = [&](const model::StrutTestParameters<double>& q) {
-      const StrutTestSystem system(q, rig);
-      const Trajectory tr = integrate_esdirk_on_steps(system, {x[0], 0.0}, t, options, steps);
-      std::vector<double> f;
-      for (std::size_t k = 0; k < t.size(); ++k) {
-        f.push_back(model::StrutTest::force_N(tr.state_at(k), x[k], q));
-      }
-      return f;
+      return *strut_test_force<double>(t, x, q, q, frozen);
     };
     for (int j = 0; j < 4; ++j) {
       auto plus = p, minus = p;

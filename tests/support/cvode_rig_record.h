@@ -2,9 +2,12 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <unsupported/Eigen/AutoDiff>
 #include <vector>
 
+#include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/model/strut_test.h"
 #include "ridefit/simulate/integrator.h"
 #include "ridefit/simulate/ode_system.h"
@@ -64,6 +67,34 @@ std::vector<double> cvode_rig_force(const std::vector<double>& time_s, Displacem
     force.push_back(model::StrutTest::force_N(trajectory.state_at(k), x(time_s[k]), p));
   }
   return force;
+}
+
+// The rig tests' multisine: 3, 1.5 and 0.8 mm at 0.7, 2.3 and 6.1 Hz, with optional phases.
+struct ThreeSines {
+  double phase_rad[3] = {0.0, 0.0, 0.0};
+  double operator()(double t) const {
+    const double w = 2.0 * 3.14159265358979323846;
+    return 0.003 * std::sin(w * 0.7 * t + phase_rad[0]) +
+           0.0015 * std::sin(w * 2.3 * t + phase_rad[1]) +
+           0.0008 * std::sin(w * 6.1 * t + phase_rad[2]);
+  }
+};
+
+// A rig record of `p` under x(t) sampled at `rate_Hz` over [0, duration_s], its force by
+// cvode_rig_force (noise-free).
+template <typename Displacement>
+fitting::HysteresisRecord cvode_rig_record(const model::StrutTestParameters<double>& p,
+                                           const Displacement& x, double duration_s, double rate_Hz,
+                                           const std::string& source) {
+  fitting::HysteresisRecord r;
+  r.source = source;
+  const auto samples = static_cast<int>(std::lround(duration_s * rate_Hz));
+  for (int k = 0; k <= samples; ++k) {
+    r.time_s.push_back(k / rate_Hz);
+    r.displacement_m.push_back(x(r.time_s.back()));
+  }
+  r.force_N = cvode_rig_force(r.time_s, x, p);
+  return r;
 }
 
 }  // namespace ridefit::testing

@@ -20,30 +20,13 @@ inline fitting::HysteresisRecord multisine_rig_record(
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
   std::normal_distribution<double> noise(0.0, noise_N > 0.0 ? noise_N : 1.0);
-  double phase[3] = {0.0, 0.0, 0.0};
+  testing::ThreeSines x;
   if (random_phases) {
-    for (double& p : phase) p = angle(rng);
-  }
-  fitting::HysteresisRecord r;
-  r.source = random_phases ? "judged" : "fitted";
-  const auto samples = static_cast<int>(std::lround(duration_s * rate_Hz));
-  for (int k = 0; k <= samples; ++k) {
-    const double t = k / rate_Hz, w = 2.0 * std::numbers::pi;
-    r.time_s.push_back(t);
-    r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t + phase[0]) +
-                               0.0015 * std::sin(w * 2.3 * t + phase[1]) +
-                               0.0008 * std::sin(w * 6.1 * t + phase[2]));
+    for (double& p : x.phase_rad) p = angle(rng);
   }
   // CVODE at rtol 1e-10 on the analytic multisine: not the solver the fits use.
-  r.force_N = cvode_rig_force(
-      r.time_s,
-      [&phase](double t) {
-        const double w = 2.0 * std::numbers::pi;
-        return 0.003 * std::sin(w * 0.7 * t + phase[0]) +
-               0.0015 * std::sin(w * 2.3 * t + phase[1]) +
-               0.0008 * std::sin(w * 6.1 * t + phase[2]);
-      },
-      strut);
+  fitting::HysteresisRecord r =
+      cvode_rig_record(strut, x, duration_s, rate_Hz, random_phases ? "judged" : "fitted");
   if (noise_N > 0.0) {
     for (double& f : r.force_N) f += noise(rng);
   }

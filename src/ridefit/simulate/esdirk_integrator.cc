@@ -412,70 +412,36 @@ void run_with(const OdeSystem& system, const std::vector<double>& times,
   solver.run(times, trajectory, history, frozen);
 }
 
-}  // namespace
-
-namespace {
+// Runs the solver of the first size in Sizes that equals n; false when none does.
+template <int... Sizes>
+bool run_fixed(int n, const OdeSystem& system, const std::vector<double>& times,
+               const IntegratorOptions& options, Trajectory& trajectory, EsdirkStepHistory* history,
+               const EsdirkStepHistory* frozen) {
+  return ((n == Sizes &&
+           (run_with<Sizes>(system, times, options, trajectory, history, frozen), true)) ||
+          ...);
+}
 
 Trajectory run_esdirk(const OdeSystem& system, const std::vector<double>& x0,
                       const std::vector<double>& output_times_s, const IntegratorOptions& options,
                       EsdirkStepHistory* history, const EsdirkStepHistory* frozen) {
-  const int n = system.size();
   if (!(options.relative_tolerance > 0.0 && options.relative_tolerance <= 0.1)) {
     throw InputError(fmt::format("relative tolerance {}: expected a value in (0, 0.1]",
                                  options.relative_tolerance));
   }
-  if (static_cast<int>(x0.size()) != n) {
-    throw InputError(
-        fmt::format("initial state has {} values, the model has {} states", x0.size(), n));
-  }
-  if (output_times_s.empty()) throw InputError("no output times requested");
-  for (std::size_t k = 1; k < output_times_s.size(); ++k) {
-    if (!(output_times_s[k] > output_times_s[k - 1])) {
-      throw InputError(fmt::format("output times must increase (sample {})", k));
-    }
-  }
-  Trajectory trajectory;
-  trajectory.state_size = n;
-  trajectory.statistics.method = to_string(Method::kEsdirk);
-  trajectory.time_s = output_times_s;
-  trajectory.states.resize(output_times_s.size() * static_cast<std::size_t>(n));
-  std::copy(x0.begin(), x0.end(), trajectory.states.begin());
+  Trajectory trajectory = start_trajectory(system, x0, output_times_s, Method::kEsdirk);
+  const int n = trajectory.state_size;
+  if (n > 24) throw InputError(fmt::format("ESDIRK: {} states, at most 24 supported", n));
   if (history != nullptr) {
     *history = EsdirkStepHistory();
     history->state_size = n;
   }
   if (output_times_s.size() == 1) return trajectory;
-  switch (n) {
-    case 2:
-      run_with<2>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 4:
-      run_with<4>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 5:
-      run_with<5>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 6:
-      run_with<6>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 14:  // the half car: passive axles, then with strut states
-      run_with<14>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 15:
-      run_with<15>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 16:
-      run_with<16>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 17:
-      run_with<17>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    case 18:
-      run_with<18>(system, output_times_s, options, trajectory, history, frozen);
-      break;
-    default:
-      if (n > 24) throw InputError(fmt::format("ESDIRK: {} states, at most 24 supported", n));
-      run_with<Eigen::Dynamic>(system, output_times_s, options, trajectory, history, frozen);
+  // Fixed sizes for the strut (2), the quarter car (4–6) and the half car (14–18).
+  const bool fixed = run_fixed<2, 4, 5, 6, 14, 15, 16, 17, 18>(n, system, output_times_s, options,
+                                                               trajectory, history, frozen);
+  if (!fixed) {
+    run_with<Eigen::Dynamic>(system, output_times_s, options, trajectory, history, frozen);
   }
   return trajectory;
 }

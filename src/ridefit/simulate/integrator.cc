@@ -245,11 +245,8 @@ void run_rk4(const std::vector<double>& output_times_s, const IntegratorOptions&
 
 }  // namespace
 
-Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
-                     const std::vector<double>& output_times_s, const IntegratorOptions& options) {
-  if (options.method == Method::kEsdirk) {
-    return integrate_esdirk(system, x0, output_times_s, options);
-  }
+Trajectory start_trajectory(const OdeSystem& system, const std::vector<double>& x0,
+                            const std::vector<double>& output_times_s, Method method) {
   const int n = system.size();
   if (static_cast<int>(x0.size()) != n) {
     throw InputError(
@@ -261,18 +258,25 @@ Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
       throw InputError(fmt::format("output times must increase (sample {})", k));
     }
   }
-
-  SundialsSession session(n);
-  CallbackData data{&system, &session};
-  double* y = N_VGetArrayPointer(session.y);
-  std::copy(x0.begin(), x0.end(), y);
-
   Trajectory trajectory;
   trajectory.state_size = n;
-  trajectory.statistics.method = to_string(options.method);
+  trajectory.statistics.method = to_string(method);
   trajectory.time_s = output_times_s;
   trajectory.states.resize(output_times_s.size() * static_cast<std::size_t>(n));
-  std::copy(y, y + n, trajectory.states.begin());
+  std::copy(x0.begin(), x0.end(), trajectory.states.begin());
+  return trajectory;
+}
+
+Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
+                     const std::vector<double>& output_times_s, const IntegratorOptions& options) {
+  if (options.method == Method::kEsdirk) {
+    return integrate_esdirk(system, x0, output_times_s, options);
+  }
+  Trajectory trajectory = start_trajectory(system, x0, output_times_s, options.method);
+  const int n = trajectory.state_size;
+  SundialsSession session(n);
+  CallbackData data{&system, &session};
+  std::copy(x0.begin(), x0.end(), N_VGetArrayPointer(session.y));
   if (output_times_s.size() == 1) return trajectory;
 
   if (options.method == Method::kCvodeBdf) {

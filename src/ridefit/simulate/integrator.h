@@ -57,6 +57,11 @@ constexpr double kMaxFixedSteps = 1e9;
 Trajectory integrate(const OdeSystem& system, const std::vector<double>& x0,
                      const std::vector<double>& output_times_s, const IntegratorOptions& options);
 
+// The checks every method makes on a request (InputError: x0's size, no or non-increasing
+// output times), and the trajectory they all start from: x0 at the first output time.
+Trajectory start_trajectory(const OdeSystem& system, const std::vector<double>& x0,
+                            const std::vector<double>& output_times_s, Method method);
+
 // "esdirk" | "cvode" | "rk4".
 const char* to_string(Method method);
 

@@ -45,6 +45,15 @@ struct StrutTestSolverOptions {
   const EsdirkStepHistory* frozen_steps = nullptr;
 };
 
+namespace strut_test_detail {
+inline IntegratorOptions integrator_options(const StrutTestSolverOptions& options) {
+  IntegratorOptions integrator;
+  integrator.relative_tolerance = options.relative_tolerance;
+  integrator.max_steps_per_s = options.max_steps_per_s;
+  return integrator;
+}
+}  // namespace strut_test_detail
+
 // The steps the adaptive run takes for this record and strut: to freeze them
 // (StrutTestSolverOptions::frozen_steps) when checking the tangents by finite differences.
 inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
@@ -52,12 +61,10 @@ inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
                                           const model::StrutTestParameters<double>& values,
                                           const StrutTestSolverOptions& options = {}) {
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
-  IntegratorOptions integrator;
-  integrator.relative_tolerance = options.relative_tolerance;
-  integrator.max_steps_per_s = options.max_steps_per_s;
   EsdirkStepHistory history;
   integrate_esdirk(StrutTestSystem(values, x), {displacement_m[0], 0.0},
-                   std::vector<double>(time_s.begin(), time_s.end()), integrator, &history);
+                   std::vector<double>(time_s.begin(), time_s.end()),
+                   strut_test_detail::integrator_options(options), &history);
   return history;
 }
 
@@ -75,9 +82,7 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
   force.reserve(n);
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
   const StrutTestSystem system(values, x);
-  IntegratorOptions integrator;
-  integrator.relative_tolerance = options.relative_tolerance;
-  integrator.max_steps_per_s = options.max_steps_per_s;
+  const IntegratorOptions integrator = strut_test_detail::integrator_options(options);
   const std::vector<double> times(time_s.begin(), time_s.end());
   const std::vector<double> y0 = {displacement_m[0], 0.0};
   try {
