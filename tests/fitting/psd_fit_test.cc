@@ -13,6 +13,7 @@
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/road/measured_road.h"
+#include "ridefit/simulate/quarter_car_sensitivity.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
 #include "support/passat.h"
 
@@ -60,21 +61,29 @@ void expect_recovered(double truth, double start) {
 TEST(PsdFit, RecoversA488NPerMmTopMount) { expect_recovered(488000.0, 600000.0); }
 TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 560000.0); }
 
-// The log-PSD residuals' Jacobian (tangents through the SDIRK steps and the FFT) against central
-// differences of the same residuals, both parameters, every bin. (The Coulomb-force column is
-// the one that caught signed_power dropping the tangent at s = 0, where a sliding Dahl element
-// sits; scalar_math.h.)
+// The log-PSD residuals' Jacobian (tangents through the ESDIRK steps and the FFT) against
+// central differences of the same residuals on the same steps (frozen: the adaptive run's step
+// sequence moves with the parameters, so differences of re-chosen steps measure the error
+// control, not the tangent), both parameters, every bin. (The Coulomb-force column is the one
+// that caught signed_power dropping the tangent at s = 0, where a sliding Dahl element sits;
+// scalar_math.h.)
 TEST(PsdFit, GradientCheckAgainstCentralDifferences) {
   auto m = measure(488000.0);
   m.time_s.resize(10001);  // 10 s are enough for the check
   m.body_acc_m_per_s2.resize(10001);
   m.wheel_acc_m_per_s2.resize(10001);
-  const model::QuarterCar car(model::DamperState::kStickSlip, testing::passat_corner().parameters);
+  auto at = testing::passat_corner().parameters;
+  at.top_mount_stiffness_N_per_m *= 1.1;  // off the truth, so residuals are not zero
+  at.coulomb_force_N *= 0.9;
+  const model::QuarterCar car(model::DamperState::kStickSlip, at);
   PsdFitOptions options;
   options.free = {"top_mount_stiffness_N_per_m", "coulomb_force_N"};
   options.segment_s = 2.0;
+  const auto steps = simulate::quarter_car_steps(
+      car, *m.road, m.time_s, {.relative_tolerance = options.relative_tolerance});
+  options.frozen_steps = &steps;
   std::unique_ptr<ceres::CostFunction> cost(make_psd_cost(m, car, options));
-  double x[2] = {1.1, 0.9};
+  double x[2] = {1.0, 1.0};
   const double* blocks[2] = {&x[0], &x[1]};
   const auto rows = static_cast<std::size_t>(cost->num_residuals());
   std::vector<double> residuals(rows), j0(rows), j1(rows);

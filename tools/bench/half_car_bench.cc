@@ -1,6 +1,7 @@
 // The 7-DOF half car of seed 001 with seed 000's strut (stick/slip, Fc = 60 N) on the front
 // axle, over 60 s of ISO 8608 class A road at 50 km/h, output at 1 kHz, ridefit's ESDIRK (the
-// default) and CVODE, both at rtol 1e-6; and the same car without friction (front strut in slip).
+// default) and CVODE, both at the default rtol (1e-5) and at 1e-6; and the same car without
+// friction (front strut in slip).
 // Road generated once, outside the timed loop.
 //   half_car_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
@@ -33,12 +34,13 @@ const ridefit::road::RoadInput& class_a_road() {
 }
 
 void run(benchmark::State& state, const std::string& damper_state,
-         ridefit::simulate::Method method = ridefit::simulate::Method::kEsdirk) {
+         ridefit::simulate::Method method = ridefit::simulate::Method::kEsdirk,
+         double relative_tolerance = ridefit::simulate::IntegratorOptions{}.relative_tolerance) {
   const ridefit::model::HalfCar model = car(damper_state);
   ridefit::simulate::HalfCarSimulationOptions options;
   options.output_rate_Hz = 1000.0;
   options.integrator.method = method;
-  options.integrator.relative_tolerance = 1e-6;
+  options.integrator.relative_tolerance = relative_tolerance;
   ridefit::simulate::HalfCarResponse response;
   for (auto _ : state) {
     response = ridefit::simulate::simulate(model, class_a_road(), options);
@@ -59,6 +61,18 @@ void BM_HalfCarFrontStrutFriction60s_Cvode(benchmark::State& state) {
   run(state, "stick_slip", ridefit::simulate::Method::kCvodeBdf);
 }
 BENCHMARK(BM_HalfCarFrontStrutFriction60s_Cvode)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+void BM_HalfCarFrontStrutFriction60s_Rtol1e6(benchmark::State& state) {
+  run(state, "stick_slip", ridefit::simulate::Method::kEsdirk, 1e-6);
+}
+BENCHMARK(BM_HalfCarFrontStrutFriction60s_Rtol1e6)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+void BM_HalfCarFrontStrutFriction60s_Cvode_Rtol1e6(benchmark::State& state) {
+  run(state, "stick_slip", ridefit::simulate::Method::kCvodeBdf, 1e-6);
+}
+BENCHMARK(BM_HalfCarFrontStrutFriction60s_Cvode_Rtol1e6)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 
 void BM_HalfCarFrontStrutSlip60s(benchmark::State& state) { run(state, "slip"); }
 BENCHMARK(BM_HalfCarFrontStrutSlip60s)->Unit(benchmark::kMillisecond)->MinTime(2.0);

@@ -15,7 +15,7 @@ namespace ridefit::cli {
 // Solver flags shared by every command that integrates: --method, --rtol, --step.
 struct SolverFlags {
   std::string method = "esdirk";
-  double relative_tolerance = 1e-6;
+  double relative_tolerance = 1e-5;
   double fixed_step_s = 1e-4;
 
   void add_to(CLI::App& command);

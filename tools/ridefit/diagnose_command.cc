@@ -352,8 +352,8 @@ void run(const DiagnoseFlags& flags) {
   options.fit.band_low_Hz = flags.band_Hz[0];
   options.fit.band_high_Hz = flags.band_Hz[1];
   options.fit.segment_s = flags.segment_s;
-  options.screening_step_s = flags.screening_step_s;
-  options.final_step_s = flags.final_step_s;
+  options.screening_relative_tolerance = flags.screening_rtol;
+  options.final_relative_tolerance = flags.final_rtol;
   options.map.segment_s = flags.segment_s;
   options.selection.threads = flags.threads;
 
@@ -483,14 +483,16 @@ void register_diagnose(CLI::App& app) {
       ->check(positive_number("s"))
       ->capture_default_str();
   command
-      ->add_option("--screening-step", flags->screening_step_s,
-                   "Largest integration step when effects are screened [s]")
-      ->check(positive_number("s"))
+      ->add_option("--screening-rtol", flags->screening_rtol,
+                   "Vehicle spectra: the integrator's relative tolerance when effects are "
+                   "screened, in (0, 0.1]")
+      ->check(CLI::Range(1e-12, 0.1))
       ->capture_default_str();
   command
-      ->add_option("--final-step", flags->final_step_s,
-                   "Largest integration step of the reported fits [s]")
-      ->check(positive_number("s"))
+      ->add_option("--rtol", flags->final_rtol,
+                   "Vehicle spectra: the integrator's relative tolerance of the reported fits "
+                   "(baseline and named effects), in (0, 0.1]")
+      ->check(CLI::Range(1e-12, 0.1))
       ->capture_default_str();
   command->add_option("--threads", flags->threads, "Effects fitted at once (0 = every core)")
       ->capture_default_str();

@@ -25,8 +25,8 @@ struct DiagnoseFlags {
   std::vector<std::string> free;
   std::vector<double> band_Hz = {0.5, 30.0};
   double segment_s = 4.0;
-  double screening_step_s = 2.5e-3;
-  double final_step_s = 0.7e-3;
+  double screening_rtol = 1e-3;
+  double final_rtol = 1e-4;
   unsigned threads = 0;
   bool json = false;
   bool quiet = false;

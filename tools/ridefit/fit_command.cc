@@ -278,6 +278,7 @@ struct FitPsdFlags {
   int starts = 1;
   int max_iterations = 50;
   std::string loss = "none";
+  double relative_tolerance = 1e-4;
   std::string output_file;
   std::string plot_file;
   bool json = false;
@@ -302,6 +303,7 @@ void run_psd(const FitPsdFlags& flags) {
   options.starts = flags.starts;
   options.max_iterations = flags.max_iterations;
   options.loss = flags.loss;
+  options.relative_tolerance = flags.relative_tolerance;
   const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
   if (!fit.converged) {
     throw RunError(fmt::format(
@@ -460,6 +462,12 @@ void register_fit(CLI::App& app) {
       ->capture_default_str();
   psd_command->add_option("--max-iterations", psd->max_iterations, "Solver iterations at most")
       ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  psd_command
+      ->add_option("--rtol", psd->relative_tolerance,
+                   "Relative tolerance of the quarter car's adaptive ESDIRK integration, in "
+                   "(0, 0.1]")
+      ->check(CLI::Range(1e-12, 0.1))
       ->capture_default_str();
   psd_command->add_option("-o,--output", psd->output_file,
                           "Fitted model (YAML, the input's schema)");

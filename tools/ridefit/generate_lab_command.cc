@@ -2,7 +2,8 @@
 // Synthetic strut rig tests with known truth (the data set in datasets/lab/ comes from here):
 // seed 000's calibration test (quasi-static triangle, 3 mm at 1 mm/s, 10 cycles), a dynamic
 // history, and three shim settings whose friction grows with the spring's compression (its
-// Figure 4). Force = the strut-test model at the true parameters + load-cell offset + seeded
+// Figure 4). Force = the strut-test model at the true parameters (CVODE at rtol 1e-10 on the
+// exact displacement) + load-cell offset + seeded
 // Gaussian noise, quantised like a 16-bit load cell over ±5 kN.
 #include <fmt/core.h>
 
@@ -18,7 +19,7 @@
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/model/strut_test.h"
-#include "ridefit/simulate/strut_test_response.h"
+#include "ridefit/simulate/strut_test_reference.h"
 #include "subcommands.h"
 
 namespace ridefit::cli {
@@ -38,27 +39,32 @@ model::StrutTestParameters<double> truth(double coulomb_force_N) {
   return {5e6, coulomb_force_N, 1.0, 488000.0, 886.9, 0.0, 0.0, kOffset_N};
 }
 
-std::vector<double> triangle(const std::vector<double>& t) {
-  std::vector<double> x;
-  for (double time : t) {
-    const double phase = std::fmod(time, 12.0) / 12.0;  // 0 → 3 → 0 → −3 → 0 mm at 1 mm/s
-    x.push_back(phase < 0.25   ? 0.012 * phase
-                : phase < 0.75 ? 0.006 - 0.012 * phase
-                               : -0.012 + 0.012 * phase);
-  }
-  return x;
+double triangle(double time) {
+  const double phase = std::fmod(time, 12.0) / 12.0;  // 0 → 3 → 0 → −3 → 0 mm at 1 mm/s
+  return phase < 0.25   ? 0.012 * phase
+         : phase < 0.75 ? 0.006 - 0.012 * phase
+                        : -0.012 + 0.012 * phase;
 }
 
+double three_sines(double time) {
+  const double w = 2.0 * std::numbers::pi;
+  return 0.003 * std::sin(w * 0.7 * time) + 0.0015 * std::sin(w * 2.3 * time) +
+         0.0008 * std::sin(w * 6.1 * time);
+}
+
+// The force by CVODE at rtol 1e-10 on the exact displacement (simulate/strut_test_reference.h):
+// not the ESDIRK that `fit hysteresis` runs.
 void write_test(const std::filesystem::path& path, const std::vector<double>& t,
-                const std::vector<double>& x, const model::StrutTestParameters<double>& p,
+                double (*displacement)(double), const model::StrutTestParameters<double>& p,
                 std::mt19937_64& rng) {
-  const auto force = simulate::strut_test_force<double>(t, x, p, p);
-  if (!force) throw RunError(fmt::format("{}: the strut model could not be solved", path.string()));
+  const std::vector<double> force = simulate::reference_strut_test_force(t, displacement, p);
+  std::vector<double> x;
+  for (double time : t) x.push_back(displacement(time));
   std::normal_distribution<double> noise(0.0, kNoise_N);
   io::write_atomically(path, [&](std::ostream& out) {
     out << "time[s],displacement[mm],force[N]\n";
     for (std::size_t k = 0; k < t.size(); ++k) {
-      const double f = std::round(((*force)[k] + noise(rng)) / kQuantum_N) * kQuantum_N;
+      const double f = std::round((force[k] + noise(rng)) / kQuantum_N) * kQuantum_N;
       out << fmt::format("{:.4f},{:.6f},{:.3f}\n", t[k], 1e3 * x[k], f);
     }
   });
@@ -70,19 +76,14 @@ void run(const GenerateLabFlags& flags) {
   std::mt19937_64 rng(flags.seed);
   std::vector<double> t;
   for (int k = 0; k <= 10 * 12 * 200; ++k) t.push_back(k / 200.0);
-  write_test(dir / "triangle_3mm_1mmps.csv", t, triangle(t), truth(60.0), rng);
-  std::vector<double> td, xd;
-  for (int k = 0; k <= 60000; ++k) {
-    const double time = k * 1e-3, w = 2.0 * std::numbers::pi;
-    td.push_back(time);
-    xd.push_back(0.003 * std::sin(w * 0.7 * time) + 0.0015 * std::sin(w * 2.3 * time) +
-                 0.0008 * std::sin(w * 6.1 * time));
-  }
-  write_test(dir / "dynamic_60s.csv", td, xd, truth(60.0), rng);
+  write_test(dir / "triangle_3mm_1mmps.csv", t, triangle, truth(60.0), rng);
+  std::vector<double> td;
+  for (int k = 0; k <= 60000; ++k) td.push_back(k * 1e-3);
+  write_test(dir / "dynamic_60s.csv", td, three_sines, truth(60.0), rng);
   std::vector<double> ts;
   for (int k = 0; k <= 3 * 12 * 200; ++k) ts.push_back(k / 200.0);
   for (int shim_mm : {0, 2, 4}) {
-    write_test(dir / fmt::format("shim_{}mm.csv", shim_mm), ts, triangle(ts),
+    write_test(dir / fmt::format("shim_{}mm.csv", shim_mm), ts, triangle,
                truth(40.0 + 5.0 * shim_mm), rng);
   }
   io::write_atomically(dir / "truth.yaml", [&](std::ostream& out) {

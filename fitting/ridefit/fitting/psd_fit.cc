@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <memory>
 #include <set>
 #include <unsupported/Eigen/FFT>
 
+#include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/model/quarter_car_parameter_names.h"
@@ -93,7 +95,7 @@ class PsdCost : public ceres::CostFunction {
  public:
   PsdCost(const PsdMeasurement& m, const model::QuarterCar& car, std::vector<std::size_t> fields,
           std::vector<double> units, WelchBins welch, std::vector<double> measured_body_log,
-          std::vector<double> measured_wheel_log, int steps)
+          std::vector<double> measured_wheel_log, simulate::AccelerationSolverOptions solver)
       : m_(m),
         car_(car),
         fields_(std::move(fields)),
@@ -101,7 +103,7 @@ class PsdCost : public ceres::CostFunction {
         welch_(std::move(welch)),
         body_log_(std::move(measured_body_log)),
         wheel_log_(std::move(measured_wheel_log)),
-        steps_(steps) {
+        solver_(solver) {
     set_num_residuals(static_cast<int>(body_log_.size() + wheel_log_.size()));
     for (std::size_t i = 0; i < fields_.size(); ++i) mutable_parameter_block_sizes()->push_back(1);
   }
@@ -119,7 +121,7 @@ class PsdCost : public ceres::CostFunction {
     const model::QuarterCar car(car_.damper_state(), values);
     if (!jacobians) return evaluate_values(car, values, residuals);
     const auto series =
-        simulate::quarter_car_accelerations<Jet>(car, jets, values, *m_.road, m_.time_s, steps_);
+        simulate::quarter_car_accelerations<Jet>(car, jets, *m_.road, m_.time_s, solver_);
     if (!series) return false;
     std::size_t row = 0;
     auto channel = [&](const std::vector<Jet>& acc, const std::vector<double>& measured_log) {
@@ -154,7 +156,7 @@ class PsdCost : public ceres::CostFunction {
   bool evaluate_values(const model::QuarterCar& car, const model::QuarterCarParameters<double>& p,
                        double* residuals) const {
     const auto series =
-        simulate::quarter_car_accelerations<double>(car, p, p, *m_.road, m_.time_s, steps_);
+        simulate::quarter_car_accelerations<double>(car, p, *m_.road, m_.time_s, solver_);
     if (!series) return false;
     std::size_t row = 0;
     for (const auto& [acc, measured_log] :
@@ -177,7 +179,7 @@ class PsdCost : public ceres::CostFunction {
   std::vector<double> units_;
   WelchBins welch_;
   std::vector<double> body_log_, wheel_log_;
-  int steps_;
+  simulate::AccelerationSolverOptions solver_;
 };
 
 std::vector<double> log_psd(const WelchBins& welch, const std::vector<double>& x) {
@@ -293,16 +295,24 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
   return {fields, bounds, units, welch, body_log, wheel_log};
 }
 
+simulate::AccelerationSolverOptions solver_options(const PsdFitOptions& options) {
+  simulate::AccelerationSolverOptions solver;
+  solver.relative_tolerance = options.relative_tolerance;
+  solver.frozen_steps = options.frozen_steps;
+  return solver;
+}
+
 ceres::CostFunction* new_psd_cost(const PsdMeasurement& m, const model::QuarterCar& car,
-                                  const PsdSetup& s, int steps) {
+                                  const PsdSetup& s,
+                                  const simulate::AccelerationSolverOptions& solver) {
   const std::size_t n = s.fields.size();
   if (n <= 2) {
-    return new PsdCost<2>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, steps);
+    return new PsdCost<2>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, solver);
   }
   if (n <= 4) {
-    return new PsdCost<4>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, steps);
+    return new PsdCost<4>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, solver);
   }
-  return new PsdCost<kMaxFree>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, steps);
+  return new PsdCost<kMaxFree>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, solver);
 }
 
 }  // namespace
@@ -311,7 +321,7 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
                                         const PsdFitOptions& options) {
   const PsdSetup setup = prepare(m, car, options, false);
   const auto series = simulate::quarter_car_accelerations<double>(
-      car, car.parameters(), car.parameters(), *m.road, m.time_s, options.steps_per_sample);
+      car, car.parameters(), *m.road, m.time_s, solver_options(options));
   if (!series) return std::nullopt;
   PsdMismatch mismatch;
   for (const auto& [acc, measured_log] :
@@ -332,7 +342,7 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
 ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
                                    const PsdFitOptions& options) {
   const PsdSetup setup = prepare(measurement, car, options);
-  return new_psd_cost(measurement, car, setup, options.steps_per_sample);
+  return new_psd_cost(measurement, car, setup, solver_options(options));
 }
 
 PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
@@ -353,7 +363,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
       x[i] = v / units[i];
     }
     ceres::Problem problem;
-    ceres::CostFunction* cost = new_psd_cost(m, car, setup, options.steps_per_sample);
+    ceres::CostFunction* cost = new_psd_cost(m, car, setup, solver_options(options));
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
     ceres::LossFunction* loss = nullptr;
@@ -367,7 +377,33 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
     ceres::Solver::Options solver;
     solver.linear_solver_type = ceres::DENSE_QR;
     solver.max_num_iterations = options.max_iterations;
+    // With bounds, Ceres' trust region otherwise runs a projected line search on every step whose
+    // trial points it evaluates with the Jacobian: a whole tangent replay per candidate, half the
+    // fit's time. The step is projected onto the bounds all the same.
+    solver.max_num_line_search_step_size_iterations = 0;
     solver.logging_type = ceres::SILENT;
+    // What the integration resolves (integration_resolution.h): the log-PSD residuals at the
+    // iterate at the fit's tolerance and at four times it. Frozen steps are one discrete map.
+    simulate::AccelerationSolverOptions coarser = solver_options(options);
+    coarser.relative_tolerance = coarser_tolerance(coarser.relative_tolerance);
+    const std::unique_ptr<ceres::CostFunction> at_tolerance(
+        new_psd_cost(m, car, setup, solver_options(options)));
+    const std::unique_ptr<ceres::CostFunction> at_coarser(new_psd_cost(m, car, setup, coarser));
+    auto measure_floor = [&]() -> double {
+      if (options.frozen_steps != nullptr) return 0.0;
+      const auto rows = static_cast<std::size_t>(at_tolerance->num_residuals());
+      std::vector<double> residuals(rows), coarse(rows);
+      const std::vector<const double*> at(blocks.begin(), blocks.end());
+      if (!at_tolerance->Evaluate(at.data(), residuals.data(), nullptr) ||
+          !at_coarser->Evaluate(at.data(), coarse.data(), nullptr)) {
+        return 0.0;
+      }
+      return integration_cost_floor(residuals, coarse);
+    };
+    StopAtIntegrationResolution stop(measure_floor,
+                                     static_cast<std::size_t>(cost->num_residuals()));
+    solver.update_state_every_iteration = true;
+    solver.callbacks.push_back(&stop);
     ceres::Solver::Summary summary;
     ceres::Solve(solver, &problem, &summary);
     if (!(summary.final_cost < best.final_cost)) continue;
@@ -375,8 +411,9 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
     result.names = options.free;
     result.final_cost = summary.final_cost;
     result.iterations = static_cast<int>(summary.iterations.size()) - 1;
-    result.converged = summary.termination_type == ceres::CONVERGENCE;
-    result.termination = summary.message;
+    result.converged = summary.termination_type == ceres::CONVERGENCE || stop.reached();
+    result.termination =
+        stop.reached() ? integration_resolution_message(stop.floor()) : summary.message;
     const double dof =
         static_cast<double>(cost->num_residuals()) - static_cast<double>(fields.size());
     const double s2 = dof > 0 ? 2.0 * summary.final_cost / dof : 0.0;
@@ -457,7 +494,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
   }
   const model::QuarterCar fitted_car(car.damper_state(), best.fitted);
   const auto series = simulate::quarter_car_accelerations<double>(
-      fitted_car, best.fitted, best.fitted, *m.road, m.time_s, options.steps_per_sample);
+      fitted_car, best.fitted, *m.road, m.time_s, solver_options(options));
   auto exp_of = [](std::vector<double> v) {
     for (double& x : v) x = std::exp(x);
     return v;

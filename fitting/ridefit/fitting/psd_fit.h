@@ -14,6 +14,7 @@
 
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/road/road_input.h"
+#include "ridefit/simulate/esdirk_integrator.h"
 
 namespace ridefit::fitting {
 
@@ -40,7 +41,12 @@ struct PsdFitOptions {
   double band_low_Hz = 0.5;
   double band_high_Hz = 30.0;
   double segment_s = 10.0;  // Welch, Hann, 50 % overlap, the same on both sides
-  int steps_per_sample = 1;
+  // The simulation's relative tolerance (simulate::AccelerationSolverOptions): 1e-4 keeps the
+  // accelerations' RMS within 0.02 % of CVODE at 1e-10, far inside a Welch bin's scatter.
+  double relative_tolerance = 1e-4;
+  // Tests only: run every evaluation on these steps (simulate::quarter_car_steps at the point
+  // checked), so central differences see the same discrete map the Jacobian belongs to.
+  const simulate::EsdirkStepHistory* frozen_steps = nullptr;
   int max_iterations = 50;
   int starts = 1;  // multi-start: also start at these many spread points within the bounds
   std::string loss = "none";  // none | huber | cauchy, on the log-PSD residuals
@@ -68,8 +74,9 @@ struct PsdFitResult {
 // body and wheel acceleration PSDs match the measured ones over the band: residuals are the
 // differences of the natural logs of the PSDs bin by bin (Welch with the same settings on both
 // sides, so every bin has the same χ² confidence and the same weight). The simulation runs the
-// measured road through quarter_car_accelerations with Jets, and the PSD's derivatives follow
-// from the FFT's linearity (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard
+// measured road through quarter_car_accelerations (adaptive ESDIRK; with Jets, the tangents of
+// its frozen step sequence), and the PSD's derivatives follow from the FFT's linearity
+// (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard
 // errors from the Jacobian at the optimum, scaled by the residual variance.
 // The cost function fit_psd hands to Ceres (log-PSD residuals of the band, one parameter block of
 // size 1 per free parameter in units of its start value, so 1.0 is the model's value), exposed
@@ -77,10 +84,10 @@ struct PsdFitResult {
 ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
                                    const PsdFitOptions& options);
 
-// How far `car` is from `measurement` on the fit's own terms (band, segments, steps; `free` is
+// How far `car` is from `measurement` on the fit's own terms (band, segments, tolerance; `free` is
 // ignored): ½·Σ r² over the log-PSD residuals of both channels, their count, and the simulated
-// accelerations on the measurement's time base. None when the simulation fails (a Newton stage
-// does not converge). Scores a fitted model on data the fit did not see.
+// accelerations on the measurement's time base. None when the simulation fails (the integrator
+// gives up). Scores a fitted model on data the fit did not see.
 struct PsdMismatch {
   double cost = 0.0;
   std::size_t residuals = 0;

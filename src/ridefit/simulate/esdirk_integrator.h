@@ -24,6 +24,16 @@ struct EsdirkStepHistory {
   }
 };
 
+// The integrator settings of a replayed run's options (StrutTestSolverOptions,
+// AccelerationSolverOptions: a relative tolerance and a step budget per simulated second).
+template <typename ReplayedRunOptions>
+IntegratorOptions esdirk_options(const ReplayedRunOptions& options) {
+  IntegratorOptions integrator;
+  integrator.relative_tolerance = options.relative_tolerance;
+  integrator.max_steps_per_s = options.max_steps_per_s;
+  return integrator;
+}
+
 // The adaptive ESDIRK3(2)4L[2]SA integrator (esdirk_tableau.h), ridefit's default.
 //
 // - Error control: the embedded solution's difference, filtered by (I − γhJ)⁻¹ (the stiff
@@ -57,5 +67,27 @@ Trajectory integrate_esdirk_on_steps(const OdeSystem& system, const std::vector<
                                      const std::vector<double>& output_times_s,
                                      const IntegratorOptions& options,
                                      const EsdirkStepHistory& steps);
+
+// A replayed run's two uses of the integrator, with `frozen` (a history, or null) choosing
+// between the adaptive run and the frozen-step map: the trajectory in doubles, and the history
+// the replay in T follows (recorded into `own` unless frozen).
+inline Trajectory integrate_esdirk_or_frozen(const OdeSystem& system, const std::vector<double>& x0,
+                                             const std::vector<double>& output_times_s,
+                                             const IntegratorOptions& options,
+                                             const EsdirkStepHistory* frozen) {
+  return frozen != nullptr ? integrate_esdirk_on_steps(system, x0, output_times_s, options, *frozen)
+                           : integrate_esdirk(system, x0, output_times_s, options);
+}
+
+inline const EsdirkStepHistory& esdirk_steps_or_frozen(const OdeSystem& system,
+                                                       const std::vector<double>& x0,
+                                                       const std::vector<double>& output_times_s,
+                                                       const IntegratorOptions& options,
+                                                       const EsdirkStepHistory* frozen,
+                                                       EsdirkStepHistory& own) {
+  if (frozen != nullptr) return *frozen;
+  integrate_esdirk(system, x0, output_times_s, options, &own);
+  return own;
+}
 
 }  // namespace ridefit::simulate

@@ -1,11 +1,12 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/LU>
+#include <array>
 #include <span>
-#include <vector>
+#include <utility>
 
 #include "ridefit/simulate/esdirk_integrator.h"
+#include "ridefit/simulate/small_dense_solve.h"
 
 namespace ridefit::simulate {
 
@@ -30,19 +31,26 @@ namespace ridefit::simulate {
 //
 // `rhs(t, y, ydot)` evaluates f in T (the model's parameters as T); `output(k, t, y)` receives the
 // state at output_times_s[k] for every k ≥ 1 (k = 0 is y0). Returns false when the double
-// Jacobian at a stage is not finite.
-template <typename T, int MaxN = 24, typename Rhs, typename Output>
-bool replay_esdirk(const EsdirkStepHistory& history, const OdeSystem& system, std::span<const T> y0,
-                   std::span<const double> output_times_s, Rhs&& rhs, Output&& output) {
+// Jacobian at a stage is not finite or G is singular.
+namespace esdirk_detail {
+
+// The replay for a state size N known at compile time (or Eigen::Dynamic up to MaxN): the state,
+// stage and slope vectors live in fixed arrays and G = I − γh·J is a fixed-size matrix, so the
+// small loops unroll and nothing is allocated or copied per step (with std::vector<T> and a
+// dynamic G, copies and the dynamic-size inverse took a third of a PSD fit).
+template <typename T, int N, int MaxN, typename Rhs, typename Output>
+bool replay_fixed(const EsdirkStepHistory& history, const OdeSystem& system, std::span<const T> y0,
+                  std::span<const double> output_times_s, Rhs& rhs, Output& output) {
   using Tab = EsdirkTableau;
   constexpr int kS = Tab::kStages;
-  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, MaxN, MaxN>;
-  const int n = history.state_size;
-  std::vector<T> y(y0.begin(), y0.end()), base(n), f(n), z(n);
-  std::vector<std::vector<T>> k(kS, std::vector<T>(n));
-  std::vector<std::vector<T>> stages(kS, std::vector<T>(n));
-  Matrix jacobian(n, n), g_inverse(n, n);
-  std::vector<T> z_constant(n);
+  constexpr int kCap = N == Eigen::Dynamic ? MaxN : N;
+  using Matrix = Eigen::Matrix<double, N, N, 0, kCap, kCap>;
+  using Vector = std::array<T, kCap>;
+  const int n = N == Eigen::Dynamic ? history.state_size : N;
+  Vector y{}, base{}, f{}, z{}, z_constant{};
+  std::array<Vector, kS> k{};
+  for (int r = 0; r < n; ++r) y[r] = y0[static_cast<std::size_t>(r)];
+  Matrix jacobian(n, n), g(n, n);
   std::size_t next_output = 1;
   const std::size_t steps = history.step_count();
   for (std::size_t step = 0; step < steps; ++step) {
@@ -57,33 +65,67 @@ bool replay_esdirk(const EsdirkStepHistory& history, const OdeSystem& system, st
       }
       const double* zd = history.stage(step, i - 1);
       if (!system.jacobian(t_stage, zd, jacobian.data())) return false;
-      g_inverse = (Matrix::Identity(n, n) - (Tab::kGamma * h) * jacobian).partialPivLu().inverse();
+      g = Matrix::Identity(n, n) - (Tab::kGamma * h) * jacobian;
       for (int r = 0; r < n; ++r) z_constant[r] = T(zd[r]);
       rhs(t_stage, z_constant.data(), f.data());
       for (int r = 0; r < n; ++r) f[r] = z_constant[r] - base[r] - T(Tab::kGamma * h) * f[r];
-      for (int r = 0; r < n; ++r) {
-        T correction(0.0);
-        for (int c = 0; c < n; ++c) correction += T(g_inverse(r, c)) * f[c];
-        stages[i][r] = z_constant[r] - correction;
+      if (!small_solve(g, f.data())) return false;  // f ← G⁻¹·residual
+      // The stage in T, and its slope k_i = (Z_i − base_i)/(γh) as the run computed it.
+      Vector& stage = i == kS - 1 ? z : k[i];
+      for (int r = 0; r < n; ++r) stage[r] = z_constant[r] - f[r];
+      if (i == kS - 1) {
+        for (int r = 0; r < n; ++r) k[i][r] = (z[r] - base[r]) / T(Tab::kGamma * h);
+      } else {
+        for (int r = 0; r < n; ++r) k[i][r] = (k[i][r] - base[r]) / T(Tab::kGamma * h);
       }
-      for (int r = 0; r < n; ++r) k[i][r] = (stages[i][r] - base[r]) / T(Tab::kGamma * h);
     }
-    const std::vector<T>& y_new = stages[kS - 1];
+    // z: the step's end (the last stage: the method is stiffly accurate).
     while (next_output < output_times_s.size() && output_times_s[next_output] <= t_new) {
       const double theta = (output_times_s[next_output] - t) / h;
       const double t2 = theta * theta, t3 = t2 * theta;
       const double h00 = 2 * t3 - 3 * t2 + 1, h10 = (t3 - 2 * t2 + theta) * h,
                    h01 = -2 * t3 + 3 * t2, h11 = (t3 - t2) * h;
+      Vector out{};
       for (int r = 0; r < n; ++r) {
-        z[r] = T(h00) * y[r] + T(h10) * k[0][r] + T(h01) * y_new[r] + T(h11) * k[kS - 1][r];
+        out[r] = T(h00) * y[r] + T(h10) * k[0][r] + T(h01) * z[r] + T(h11) * k[kS - 1][r];
       }
-      output(next_output, output_times_s[next_output], z.data());
+      output(next_output, output_times_s[next_output], out.data());
       ++next_output;
     }
-    y = y_new;
+    y = z;
     k[0] = k[kS - 1];
   }
   return true;
+}
+
+template <typename T, int MaxN, int... Sizes, typename Rhs, typename Output>
+bool replay_dispatch(std::integer_sequence<int, Sizes...>, const EsdirkStepHistory& history,
+                     const OdeSystem& system, std::span<const T> y0,
+                     std::span<const double> output_times_s, Rhs& rhs, Output& output) {
+  bool ok = false;
+  const bool fixed =
+      ((history.state_size == Sizes &&
+        (ok = replay_fixed<T, Sizes, MaxN>(history, system, y0, output_times_s, rhs, output),
+         true)) ||
+       ...);
+  if (fixed) return ok;
+  return replay_fixed<T, Eigen::Dynamic, MaxN>(history, system, y0, output_times_s, rhs, output);
+}
+
+}  // namespace esdirk_detail
+
+// MaxN: the largest state size the caller's system has (fixed-size code for 2 and 4–6 states).
+template <typename T, int MaxN = 24, typename Rhs, typename Output>
+bool replay_esdirk(const EsdirkStepHistory& history, const OdeSystem& system, std::span<const T> y0,
+                   std::span<const double> output_times_s, Rhs&& rhs, Output&& output) {
+  if (history.state_size > MaxN) return false;
+  if constexpr (MaxN <= 6) {
+    return esdirk_detail::replay_dispatch<T, MaxN>(
+        std::integer_sequence<int, 2, 4, 5, 6>{}, history, system, y0, output_times_s, rhs, output);
+  } else {
+    return esdirk_detail::replay_fixed<T, Eigen::Dynamic, MaxN>(history, system, y0, output_times_s,
+                                                                rhs, output);
+  }
 }
 
 }  // namespace ridefit::simulate

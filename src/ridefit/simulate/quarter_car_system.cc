@@ -17,7 +17,10 @@ constexpr int kMax = model::QuarterCar::kMaxStates;
 }  // namespace
 
 QuarterCarSystem::QuarterCarSystem(const model::QuarterCar& car, const road::RoadInput& road)
-    : car_(car), road_(road) {
+    : car_(car),
+      road_(road),
+      jacobian_parameters_(
+          autodiff_parameters<JacobianScalar>(car.parameters(), car.state_size())) {
   const auto& p = car.parameters();
   const auto state = car.damper_state();
   if (state != model::DamperState::kStick) {
@@ -84,9 +87,8 @@ bool QuarterCarSystem::jacobian(double t_s, const double* x, double* jacobian_co
   const auto input = road_at(t_s);
   return autodiff_jacobian<kMax>(
       size(), x,
-      [&](const auto* xa, auto* fa) {
-        using AutoDiff = std::remove_cvref_t<decltype(*xa)>;
-        car_.derivatives(xa, input, autodiff_parameters<AutoDiff>(car_.parameters(), size()), fa);
+      [&](const JacobianScalar* xa, JacobianScalar* fa) {
+        car_.derivatives(xa, input, jacobian_parameters_, fa);
       },
       jacobian_column_major);
 }

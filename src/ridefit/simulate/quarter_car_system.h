@@ -1,5 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
+
+#include <unsupported/Eigen/AutoDiff>
 #include <vector>
 
 #include "ridefit/model/quarter_car.h"
@@ -32,8 +35,14 @@ class QuarterCarSystem : public OdeSystem {
   // one integration (not shared between threads).
   road::RoadSample road_at(double t_s) const;
 
+  // The Jacobian's scalar (autodiff_jacobian's) and the parameters in it, made once: converting
+  // them on every Jacobian cost as much as the Jacobian itself.
+  using JacobianScalar = Eigen::AutoDiffScalar<
+      Eigen::Matrix<double, Eigen::Dynamic, 1, 0, model::QuarterCar::kMaxStates, 1>>;
+
   const model::QuarterCar& car_;
   const road::RoadInput& road_;
+  model::QuarterCarParameters<JacobianScalar> jacobian_parameters_;
   std::vector<Switch> switches_;
   mutable double cached_time_s_ = -1e300;
   mutable road::RoadSample cached_road_;

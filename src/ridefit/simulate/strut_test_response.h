@@ -45,15 +45,6 @@ struct StrutTestSolverOptions {
   const EsdirkStepHistory* frozen_steps = nullptr;
 };
 
-namespace strut_test_detail {
-inline IntegratorOptions integrator_options(const StrutTestSolverOptions& options) {
-  IntegratorOptions integrator;
-  integrator.relative_tolerance = options.relative_tolerance;
-  integrator.max_steps_per_s = options.max_steps_per_s;
-  return integrator;
-}
-}  // namespace strut_test_detail
-
 // The steps the adaptive run takes for this record and strut: to freeze them
 // (StrutTestSolverOptions::frozen_steps) when checking the tangents by finite differences.
 inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
@@ -63,8 +54,8 @@ inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
   EsdirkStepHistory history;
   integrate_esdirk(StrutTestSystem(values, x), {displacement_m[0], 0.0},
-                   std::vector<double>(time_s.begin(), time_s.end()),
-                   strut_test_detail::integrator_options(options), &history);
+                   std::vector<double>(time_s.begin(), time_s.end()), esdirk_options(options),
+                   &history);
   return history;
 }
 
@@ -82,25 +73,21 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
   force.reserve(n);
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
   const StrutTestSystem system(values, x);
-  const IntegratorOptions integrator = strut_test_detail::integrator_options(options);
+  const IntegratorOptions integrator = esdirk_options(options);
   const std::vector<double> times(time_s.begin(), time_s.end());
   const std::vector<double> y0 = {displacement_m[0], 0.0};
   try {
     if constexpr (std::is_same_v<T, double>) {
       const Trajectory trajectory =
-          options.frozen_steps != nullptr
-              ? integrate_esdirk_on_steps(system, y0, times, integrator, *options.frozen_steps)
-              : integrate_esdirk(system, y0, times, integrator);
+          integrate_esdirk_or_frozen(system, y0, times, integrator, options.frozen_steps);
       for (std::size_t k = 0; k < n; ++k) {
         force.push_back(
             model::StrutTest::force_N(trajectory.state_at(k), displacement_m[k], parameters));
       }
     } else {
       EsdirkStepHistory own_history;
-      if (options.frozen_steps == nullptr)
-        integrate_esdirk(system, y0, times, integrator, &own_history);
       const EsdirkStepHistory& history =
-          options.frozen_steps != nullptr ? *options.frozen_steps : own_history;
+          esdirk_steps_or_frozen(system, y0, times, integrator, options.frozen_steps, own_history);
       const T y0_t[2] = {T(y0[0]), T(y0[1])};
       force.push_back(model::StrutTest::force_N(y0_t, T(displacement_m[0]), parameters));
       const bool ok = replay_esdirk<T, 2>(

@@ -28,6 +28,7 @@ double RigDisplacement::at(double time_s) const {
 }
 
 double RigDisplacement::interpolate(double time_s) const {
+  if (exact_m_) return exact_m_(time_s);
   if (spline_) return spline_->value(time_s);
   if (time_s <= time_s_.front()) return displacement_m_.front();
   if (time_s >= time_s_.back()) return displacement_m_.back();

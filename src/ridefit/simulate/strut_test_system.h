@@ -1,7 +1,9 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "ridefit/model/strut_test.h"
@@ -28,6 +30,8 @@ class RigDisplacement {
  public:
   RigDisplacement(std::span<const double> time_s, std::span<const double> displacement_m,
                   RigInterpolation interpolation = RigInterpolation::kSpline);
+  // A displacement known at every instant (reference data: strut_test_reference.h).
+  explicit RigDisplacement(std::function<double(double)> exact_m) : exact_m_(std::move(exact_m)) {}
   double at(double time_s) const;
 
  private:
@@ -39,6 +43,7 @@ class RigDisplacement {
   std::vector<double> time_s_;
   std::vector<double> displacement_m_;
   std::optional<road::UniformSpline> spline_;
+  std::function<double(double)> exact_m_;
 };
 
 // The strut on the rig (model::StrutTest) as a first-order system for the integrators:

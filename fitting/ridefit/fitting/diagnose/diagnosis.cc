@@ -121,25 +121,24 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   DisagreementOptions map_options = options.map;
   map_options.band_low_Hz = options.fit.band_low_Hz;
   map_options.band_high_Hz = options.fit.band_high_Hz;
-  auto with_step = [&](double step_s) {
+  auto with_tolerance = [&](double relative_tolerance) {
     PsdFitOptions o = options.fit;
-    o.steps_per_sample = std::max(
-        1, static_cast<int>(std::ceil(1.0 / (data.training.sample_rate_Hz * step_s) - 1e-9)));
+    o.relative_tolerance = relative_tolerance;
     return o;
   };
-  PsdFitOptions screening = with_step(options.screening_step_s);
+  PsdFitOptions screening = with_tolerance(options.screening_relative_tolerance);
   // An effect the data cannot see wanders along a flat cost; screening stops it sooner.
   screening.max_iterations = std::min(screening.max_iterations, options.screening_iterations);
-  // The reported fits (baseline and with the named effects) take the fine step, from the
+  // The reported fits (baseline and with the named effects) take the tight tolerance, from the
   // screening fit's optimum: what the report, the map and model.yaml show.
-  const PsdFitOptions final_fit = with_step(options.final_step_s);
+  const PsdFitOptions final_fit = with_tolerance(options.final_relative_tolerance);
   const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& free,
                               const ParameterBounds& bounds, bool reported) {
     return fit_and_score(start, free, bounds, data, reported ? final_fit : screening, map_options);
   };
   SelectionOptions selection_options = options.selection;
   selection_options.gap_unit = "dB";
-  selection_options.refine = final_fit.steps_per_sample != screening.steps_per_sample;
+  selection_options.refine = final_fit.relative_tolerance != screening.relative_tolerance;
   DiagnosisModel start = baseline;
   start.kind = DataKind::kVehicleSpectra;
   const Selection selection = select_effects(

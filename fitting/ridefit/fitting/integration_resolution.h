@@ -1,0 +1,111 @@
+#pragma once
+
+#include <ceres/iteration_callback.h>
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <utility>
+
+namespace ridefit::fitting {
+
+// A fit of simulated to measured data cannot tell costs apart below the integrator's own scatter:
+// the adaptive run's steps move with the parameters, so its residuals move by about its error
+// from one evaluation to the next. Once the fit explains the data to that level, the trust
+// region spent a dozen iterations rejecting steps that chase the scatter (on noise-free records:
+// every recovery test and benchmark), or accepting and rejecting them at random (on noisy ones).
+// This stop ends the fit there instead.
+//
+// The scatter is measured, not assumed: the residuals r at the current parameters at the fit's
+// tolerance and r_c at four times it differ by a few times the fit's integration error e (the
+// global error grows about in proportion to the tolerance: 4e − e), δ = |r − r_c|, measured at the
+// start values and again wherever the stop would end the fit (the error depends on the
+// parameters: a stiffer Dahl element than the truth's makes more of it). The fit stops,
+// successfully, when, with δ measured at the current iterate,
+//  - its cost is at most ½δ²: its residuals are within a few integration errors, the data
+//    explained as well as the integration resolves (noise-free records); or
+//  - the decrease the trust region's model predicts for its step is below the cost's scatter,
+//    ½δ² + |r|·δ/√N (the residuals' own size times the integration error, averaged over N
+//    independent residuals): the step is not worth taking (noisy records at their optimum).
+// Far from the optimum the predicted decreases are orders of magnitude above that, so neither
+// ends a fit early; Ceres' own tolerances still apply. Needs
+// Solver::Options::update_state_every_iteration, so the parameter blocks hold the iterate.
+inline double coarser_tolerance(double relative_tolerance) {
+  return relative_tolerance * 4.0 < 0.1 ? relative_tolerance * 4.0 : 0.1;
+}
+
+// ½δ²: the cost of residuals at the integration's scatter.
+inline double integration_cost_floor(std::span<const double> residuals,
+                                     std::span<const double> coarse_residuals) {
+  double squared = 0.0;
+  for (std::size_t i = 0; i < residuals.size() && i < coarse_residuals.size(); ++i) {
+    const double d = residuals[i] - coarse_residuals[i];
+    squared += d * d;
+  }
+  return 0.5 * squared;
+}
+
+class StopAtIntegrationResolution final : public ceres::IterationCallback {
+ public:
+  // `measure_floor()`: ½δ² at the parameter blocks' current values (0 when a run fails there).
+  StopAtIntegrationResolution(std::function<double()> measure_floor, std::size_t residual_count)
+      : measure_(std::move(measure_floor)),
+        count_(static_cast<double>(residual_count > 0 ? residual_count : 1)) {}
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    if (summary.iteration == 0 || summary.step_is_successful) ++iterate_;
+    if (iterate_ == 1 && measured_at_ == 0) measure_here();
+    if (!wants_to_stop(summary)) return ceres::SOLVER_CONTINUE;
+    if (measured_at_ != iterate_) {
+      measure_here();
+      if (!wants_to_stop(summary)) return ceres::SOLVER_CONTINUE;
+    }
+    reached_ = true;
+    return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+  }
+
+  bool reached() const { return reached_; }
+  double floor() const { return floor_; }
+
+ private:
+  void measure_here() {
+    floor_ = measure_();
+    measured_at_ = iterate_;
+  }
+
+  bool wants_to_stop(const ceres::IterationSummary& summary) const {
+    if (!(floor_ > 0.0)) return false;
+    const bool accepted = summary.iteration == 0 || summary.step_is_successful;
+    if (accepted && summary.cost <= floor_) return true;
+    // A trial point the model could not be solved at (Ceres marks it invalid, its cost the
+    // largest double) says nothing about the scatter.
+    if (summary.iteration == 0 || !summary.step_is_valid || summary.relative_decrease == 0.0 ||
+        !(std::abs(summary.cost) < 1e300)) {
+      return false;
+    }
+    const double predicted = std::abs(summary.cost_change / summary.relative_decrease);
+    const double scatter =
+        floor_ + std::sqrt(2.0 * std::abs(summary.cost)) * std::sqrt(2.0 * floor_ / count_);
+    return std::isfinite(predicted) && predicted < scatter;
+  }
+
+  std::function<double()> measure_;
+  double count_;
+  double floor_ = 0.0;
+  long iterate_ = 0;      // accepted iterates so far (the start is the first)
+  long measured_at_ = 0;  // the iterate floor_ was measured at
+  bool reached_ = false;
+};
+
+// The termination text a fit reports when the stop ended it.
+inline std::string integration_resolution_message(double cost_floor) {
+  return fmt::format(
+      "Converged to the integrator's resolution (cost scatter {:.3g} from the integration "
+      "error; lower --rtol to resolve further)",
+      cost_floor);
+}
+
+}  // namespace ridefit::fitting

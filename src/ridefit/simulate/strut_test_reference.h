@@ -1,0 +1,21 @@
+#pragma once
+
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "ridefit/model/strut_test.h"
+
+namespace ridefit::simulate {
+
+// Reference rig forces: the strut-test model (StrutTestSystem) under a displacement known at
+// every instant, integrated by CVODE at rtol 1e-10 (a tenth of a nanometre on z_c, nanonewtons
+// on F_f), started at rest (z_c = x(t₀), F_f = 0). The data the generators write and the tests
+// fit are made this way: by another integrator than the adaptive ESDIRK that `fit` and
+// `diagnose` run, and without sampling the displacement, so a fit measures the model and not its
+// own discretisation. RunError when CVODE fails.
+std::vector<double> reference_strut_test_force(
+    std::span<const double> time_s, const std::function<double(double)>& displacement_m,
+    const model::StrutTestParameters<double>& parameters);
+
+}  // namespace ridefit::simulate

@@ -1,0 +1,84 @@
+// The stop that ends a fit at the integrator's resolution: when it stops, when it must not, and
+// that it measures the scatter again before stopping at a new iterate.
+#include "ridefit/fitting/integration_resolution.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace ridefit::fitting {
+namespace {
+
+ceres::IterationSummary iterate(int iteration, double cost, bool successful,
+                                double cost_change = 0.0, double relative_decrease = 0.0) {
+  ceres::IterationSummary s;
+  s.iteration = iteration;
+  s.cost = cost;
+  s.step_is_successful = successful;
+  s.step_is_valid = true;
+  s.cost_change = cost_change;
+  s.relative_decrease = relative_decrease;
+  return s;
+}
+
+TEST(IntegrationResolution, FloorIsHalfTheSquaredDifferenceOfTheTwoRuns) {
+  const std::vector<double> r = {1.0, 2.0, 3.0}, coarse = {1.5, 2.0, 1.0};
+  EXPECT_DOUBLE_EQ(integration_cost_floor(r, coarse), 0.5 * (0.25 + 0.0 + 4.0));
+  EXPECT_DOUBLE_EQ(coarser_tolerance(1e-6), 4e-6);
+  EXPECT_DOUBLE_EQ(coarser_tolerance(0.05), 0.1);  // the integrators' largest tolerance
+}
+
+TEST(IntegrationResolution, StopsOnlyOnceTheCostIsAtTheScatterMeasuredThere) {
+  int measurements = 0;
+  double floor = 1.0;
+  StopAtIntegrationResolution stop(
+      [&] {
+        ++measurements;
+        return floor;
+      },
+      10000);
+  // Far from the optimum: large cost, large predicted decrease.
+  EXPECT_EQ(stop(iterate(0, 1e6, true)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(measurements, 1);  // measured at the start
+  EXPECT_EQ(stop(iterate(1, 1e3, true, 1e6 - 1e3, 1.0)), ceres::SOLVER_CONTINUE);
+  // A trial point the model could not be solved at: never a reason to stop.
+  auto failed = iterate(2, 1.797e308, false, -1.797e308, -1.797e308);
+  failed.step_is_valid = false;
+  EXPECT_EQ(stop(failed), ceres::SOLVER_CONTINUE);
+  // Below the start's floor at a new iterate: measured again there; here the integration is
+  // finer (floor 0.01), so the fit goes on.
+  floor = 0.01;
+  EXPECT_EQ(stop(iterate(3, 0.5, true, 999.5, 1.0)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(measurements, 2);
+  EXPECT_FALSE(stop.reached());
+  // A rejected step leaves the iterate where it was: its measurement still holds.
+  EXPECT_EQ(stop(iterate(4, 0.6, false, -0.1, -1.0)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(measurements, 2);
+  // Below that floor at the next iterate: measured there once more, and it stops.
+  EXPECT_EQ(stop(iterate(5, 0.008, true, 0.492, 1.0)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+  EXPECT_EQ(measurements, 3);
+  EXPECT_TRUE(stop.reached());
+  EXPECT_DOUBLE_EQ(stop.floor(), 0.01);
+}
+
+TEST(IntegrationResolution, StopsWhenThePredictedDecreaseIsBelowTheScatter) {
+  StopAtIntegrationResolution stop([] { return 0.1; }, 10000);
+  EXPECT_EQ(stop(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
+  // Noisy data at their optimum: cost 500 (the noise's), a step predicting a decrease of 0.05
+  // (cost change 0.04, ratio 0.8), below the scatter 0.1 + √1000·√(0.2/10000) ≈ 0.24.
+  EXPECT_EQ(stop(iterate(1, 499.96, true, 0.04, 0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+  EXPECT_TRUE(stop.reached());
+  // A step predicting a decrease of 50 on the same cost is worth taking.
+  StopAtIntegrationResolution go_on([] { return 0.1; }, 10000);
+  EXPECT_EQ(go_on(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(go_on(iterate(1, 460.0, true, 40.0, 0.8)), ceres::SOLVER_CONTINUE);
+}
+
+TEST(IntegrationResolution, NoFloorNoStop) {
+  StopAtIntegrationResolution stop([] { return 0.0; }, 100);  // frozen steps, or a failed run
+  EXPECT_EQ(stop(iterate(0, 0.0, true)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(1, 0.0, true, 1e-30, 1.0)), ceres::SOLVER_CONTINUE);
+}
+
+}  // namespace
+}  // namespace ridefit::fitting
