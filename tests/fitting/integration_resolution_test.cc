@@ -64,14 +64,16 @@ TEST(IntegrationResolution, StopsOnlyOnceTheCostIsAtTheScatterMeasuredThere) {
 TEST(IntegrationResolution, StopsWhenThePredictedDecreaseIsBelowTheScatter) {
   StopAtIntegrationResolution stop([] { return 0.1; }, 10000);
   EXPECT_EQ(stop(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
+  // A small accepted step is progress (along a flat valley): the fit goes on.
+  EXPECT_EQ(stop(iterate(1, 499.96, true, 0.04, 0.8)), ceres::SOLVER_CONTINUE);
   // Noisy data at their optimum: cost 500 (the noise's), a step predicting a decrease of 0.05
-  // (cost change 0.04, ratio 0.8), below the scatter 0.1 + √1000·√(0.2/10000) ≈ 0.24.
-  EXPECT_EQ(stop(iterate(1, 499.96, true, 0.04, 0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+  // (cost change −0.04, ratio −0.8) rejected, below the scatter 0.1 + √1000·√(0.2/10000) ≈ 0.24.
+  EXPECT_EQ(stop(iterate(2, 500.0, false, -0.04, -0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
   EXPECT_TRUE(stop.reached());
-  // A step predicting a decrease of 50 on the same cost is worth taking.
+  // A rejected step that had predicted a decrease of 50 is the model's failure, not the scatter's.
   StopAtIntegrationResolution go_on([] { return 0.1; }, 10000);
   EXPECT_EQ(go_on(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
-  EXPECT_EQ(go_on(iterate(1, 460.0, true, 40.0, 0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(go_on(iterate(1, 500.0, false, -40.0, -0.8)), ceres::SOLVER_CONTINUE);
 }
 
 TEST(IntegrationResolution, NoFloorNoStop) {

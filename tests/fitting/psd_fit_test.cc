@@ -32,6 +32,9 @@ PsdMeasurement measure(double top_mount_N_per_m) {
   const auto road = road::make_iso8608_road(r);
   simulate::SimulationOptions options;
   options.output_rate_Hz = 1000.0;
+  // CVODE, not the ESDIRK that the fit runs (no inverse crime).
+  options.integrator.method = simulate::Method::kCvodeBdf;
+  options.integrator.relative_tolerance = 1e-8;
   const auto run = simulate::simulate(car, road, options);
   PsdMeasurement m;
   m.source = "simulated";

@@ -27,9 +27,10 @@ namespace ridefit::fitting {
 // successfully, when, with δ measured at the current iterate,
 //  - its cost is at most ½δ²: its residuals are within a few integration errors, the data
 //    explained as well as the integration resolves (noise-free records); or
-//  - the decrease the trust region's model predicts for its step is below the cost's scatter,
-//    ½δ² + |r|·δ/√N (the residuals' own size times the integration error, averaged over N
-//    independent residuals): the step is not worth taking (noisy records at their optimum).
+//  - a step is rejected whose decrease, as the trust region's model predicted it, is below the
+//    cost's scatter ½δ² + |r|·δ/√N (the residuals' own size times the integration error,
+//    averaged over N independent residuals): the scatter, not the model, decided the step
+//    (noisy records at their optimum).
 // Far from the optimum the predicted decreases are orders of magnitude above that, so neither
 // ends a fit early; Ceres' own tolerances still apply. Needs
 // Solver::Options::update_state_every_iteration, so the parameter blocks hold the iterate.
@@ -86,6 +87,10 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
         !(std::abs(summary.cost) < 1e300)) {
       return false;
     }
+    // Only a rejected step: one the model promised little for and the scatter then refused.
+    // Small accepted steps are progress along a flat valley (a damper knee traded against the
+    // damping below it), which the fit must be allowed to follow.
+    if (summary.step_is_successful) return false;
     const double predicted = std::abs(summary.cost_change / summary.relative_decrease);
     const double scatter =
         floor_ + std::sqrt(2.0 * std::abs(summary.cost)) * std::sqrt(2.0 * floor_ / count_);

@@ -69,6 +69,16 @@ Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string
 
   for (int round = 0; round < options.max_effects; ++round) {
     DiagnosisRound this_round;
+    // The model so far, refitted from its own optimum (the reported fit when there is one:
+    // finer and allowed more iterations): a screening fit stopped by its iteration cap or the
+    // integrator's resolution would otherwise leave room that any trial's refit takes, and an
+    // effect that changes nothing (a bump stop the wheel never reaches) was credited with it.
+    if (round > 0) {
+      ScoredFit again = options.refine ? reported : fit(current.model, free, bounds, false);
+      if (again.failure.empty() && again.training_cost < current.training_cost) {
+        current = std::move(again);
+      }
+    }
     const double start_bic = bic(current, free.size());
     DiagnosisModel start = current.model;
     start.free = free;

@@ -32,7 +32,12 @@ class DamperDigressive : public Effect {
             std::nullopt,
             {{"damper_knee_velocity_m_per_s", 0.005, 2.0},
              {"damping_above_knee_Ns_per_m", 0.02 * c, c}},
-            {}};
+            // A second start with the damping split around the baseline's fitted value: from the
+            // first alone the fit could slide down the knee–damping valley (a low knee with a
+            // stiff damper below it) that a short record barely tells from the truth.
+            {{{"damper_knee_velocity_m_per_s", 0.1},
+              {"damping_above_knee_Ns_per_m", 0.8 * c},
+              {"damping_Ns_per_m", 2.0 * c}}}};
   }
 };
 
