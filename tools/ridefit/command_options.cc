@@ -28,6 +28,22 @@ CLI::Validator positive_number(const std::string& unit) {
       "NUMBER > 0");
 }
 
+CLI::Option* add_tolerance_option(CLI::App& command, const std::string& name, double& value,
+                                  const std::string& what) {
+  return command.add_option(name, value, what + ", in (0, 0.1]")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(v > 0.0 && v <= 0.1)) {
+              return fmt::format("expected a relative tolerance in (0, 0.1], got '{}'", text);
+            }
+            return "";
+          },
+          "RTOL"))
+      ->capture_default_str();
+}
+
 ProgressReporter::ProgressReporter(std::string what, double end_time_s)
     : what_(std::move(what)),
       end_time_s_(end_time_s),
@@ -60,14 +76,10 @@ void SolverFlags::add_to(CLI::App& command) {
                   "(SUNDIALS' adaptive BDF, the reference) or rk4 (fixed step, the seed's ode4)")
       ->check(CLI::IsMember({"esdirk", "cvode", "rk4"}))
       ->capture_default_str();
-  command
-      .add_option(
-          "--rtol", relative_tolerance,
-          "Relative tolerance of esdirk and cvode, in (0, 0.1]: each state's local error is "
-          "kept below rtol times its size plus rtol times its typical size (1 mm, "
-          "10 mm/s, Fc)")
-      ->check(positive_number(""))
-      ->capture_default_str();
+  add_tolerance_option(command, "--rtol", relative_tolerance,
+                       "Relative tolerance of esdirk and cvode: each state's local error is kept "
+                       "below rtol times its size plus rtol times its typical size (1 mm, "
+                       "10 mm/s, Fc)");
   command.add_option("--step", fixed_step_s, "RK4 fixed step [s]")
       ->check(positive_number("s"))
       ->capture_default_str();

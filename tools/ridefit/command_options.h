@@ -26,6 +26,11 @@ struct SolverFlags {
 // 309-digit upper bound). `unit` is shown in the message, e.g. "Hz".
 CLI::Validator positive_number(const std::string& unit);
 
+// An integrator tolerance flag (--rtol and kin): a number in (0, 0.1], the range every adaptive
+// integrator accepts, with `what` saying whose tolerance it is; the default is shown.
+CLI::Option* add_tolerance_option(CLI::App& command, const std::string& name, double& value,
+                                  const std::string& what);
+
 // Reports progress on stderr for runs that take longer than a second: nothing for short
 // runs, then a line per 10 % of simulated time (rewritten in place on a terminal).
 class ProgressReporter {

@@ -482,18 +482,12 @@ void register_diagnose(CLI::App& app) {
   command->add_option("--segment", flags->segment_s, "Welch segment length [s]")
       ->check(positive_number("s"))
       ->capture_default_str();
-  command
-      ->add_option("--screening-rtol", flags->screening_rtol,
-                   "Vehicle spectra: the integrator's relative tolerance when effects are "
-                   "screened, in (0, 0.1]")
-      ->check(CLI::Range(1e-12, 0.1))
-      ->capture_default_str();
-  command
-      ->add_option("--rtol", flags->final_rtol,
-                   "Vehicle spectra: the integrator's relative tolerance of the reported fits "
-                   "(baseline and named effects), in (0, 0.1]")
-      ->check(CLI::Range(1e-12, 0.1))
-      ->capture_default_str();
+  add_tolerance_option(
+      *command, "--screening-rtol", flags->screening_rtol,
+      "Vehicle spectra: the integrator's relative tolerance when effects are screened");
+  add_tolerance_option(*command, "--rtol", flags->final_rtol,
+                       "Vehicle spectra: the integrator's relative tolerance of the reported "
+                       "fits (baseline and named effects)");
   command->add_option("--threads", flags->threads, "Effects fitted at once (0 = every core)")
       ->capture_default_str();
   command->add_flag("--json", flags->json,

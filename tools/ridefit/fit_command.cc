@@ -404,11 +404,8 @@ void register_fit(CLI::App& app) {
   command->add_option("--loss-scale", flags->loss_scale_N, "Residual [N] where the loss bends")
       ->check(positive_number("N"))
       ->capture_default_str();
-  command
-      ->add_option("--rtol", flags->relative_tolerance,
-                   "Relative tolerance of the strut's adaptive ESDIRK integration, in (0, 0.1]")
-      ->check(CLI::Range(1e-12, 0.1))
-      ->capture_default_str();
+  add_tolerance_option(*command, "--rtol", flags->relative_tolerance,
+                       "Relative tolerance of the strut's adaptive ESDIRK integration");
   command
       ->add_option("--interpolation", flags->interpolation,
                    "The displacement between samples: spline (C2, for smooth motions) or linear "
@@ -463,12 +460,8 @@ void register_fit(CLI::App& app) {
   psd_command->add_option("--max-iterations", psd->max_iterations, "Solver iterations at most")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
-  psd_command
-      ->add_option("--rtol", psd->relative_tolerance,
-                   "Relative tolerance of the quarter car's adaptive ESDIRK integration, in "
-                   "(0, 0.1]")
-      ->check(CLI::Range(1e-12, 0.1))
-      ->capture_default_str();
+  add_tolerance_option(*psd_command, "--rtol", psd->relative_tolerance,
+                       "Relative tolerance of the quarter car's adaptive ESDIRK integration");
   psd_command->add_option("-o,--output", psd->output_file,
                           "Fitted model (YAML, the input's schema)");
   psd_command->add_option("--plot", psd->plot_file, "Measured and fitted PSDs (.png or .svg)");
