@@ -9,7 +9,9 @@
 #include <fstream>
 #include <string>
 
+#include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/simulate/strut_test_reference.h"
 #include "ridefit/simulate/strut_test_response.h"
 #include "support/cli_runner.h"
 #include "support/passat.h"
@@ -110,6 +112,99 @@ TEST_F(FitCli, AFitThatDoesNotConvergeExits1WithoutAModel) {
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("did not converge"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(fitted));
+}
+
+}  // namespace
+}  // namespace ridefit
+
+namespace ridefit {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_cli;
+
+class FitVerdictCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("ridefit_fit_verdict_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // A friction loop (triangle 3 mm at 1 mm/s, Fc 45 N) by CVODE, and optionally a command column.
+  std::string loop(const std::string& command_header = "", double command_scale = 1.0) const {
+    const model::StrutTestParameters<double> p{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+    auto x = [](double time) {
+      const double phase = std::fmod(time, 12.0) / 12.0;
+      return phase < 0.25   ? 0.012 * phase
+             : phase < 0.75 ? 0.006 - 0.012 * phase
+                            : -0.012 + 0.012 * phase;
+    };
+    std::vector<double> t;
+    for (int k = 0; k <= 1200; ++k) t.push_back(k / 100.0);
+    const auto f = simulate::reference_strut_test_force(t, x, p);
+    std::ofstream out(dir_ / "loop.csv");
+    out << "time[s],displacement[mm],force[N]" << (command_header.empty() ? "" : ",")
+        << command_header << "\n";
+    out.precision(10);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      out << t[k] << "," << 1e3 * x(t[k]) << "," << f[k];
+      if (!command_header.empty()) out << "," << command_scale * (k % 200 < 100 ? 0.5 : 1.5);
+      out << "\n";
+    }
+    return (dir_ / "loop.csv").string();
+  }
+  fs::path dir_;
+};
+
+// Build item 2: a linear damper fitted to a friction loop is flagged, exit 1, and the model is
+// written only with --keep.
+TEST_F(FitVerdictCli, AWrongModelIsFlaggedWithExit1AndWrittenOnlyWithKeep) {
+  const std::string slip = testing::dataset("hidden/baselines/passat_slip.yaml");
+  const fs::path fitted = dir_ / "fitted.yaml";
+  const auto run = run_cli("fit hysteresis " + loop() + " --model " + slip +
+                           " --free damping_Ns_per_m,force_offset_N -o " + fitted.string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("does not explain this data"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("ridefit diagnose"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("Converged"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(fitted));
+  const auto kept =
+      run_cli("fit hysteresis " + loop() + " --model " + slip +
+              " --free damping_Ns_per_m,force_offset_N --keep --json -o " + fitted.string());
+  EXPECT_EQ(kept.exit_code, 1) << kept.output;
+  EXPECT_TRUE(fs::exists(fitted));
+  const auto j = nlohmann::json::parse(kept.output.substr(0, kept.output.rfind('}') + 1));
+  EXPECT_FALSE(j["explains_data"].get<bool>());
+  EXPECT_GT(j["nrmse_percent"].get<double>(), 10.0);
+  // The right model on the same loop explains it.
+  const auto right = run_cli("fit hysteresis " + loop() + " --model " +
+                             testing::dataset("vehicles/passat_b8_front.yaml") +
+                             " --free coulomb_force_N,force_offset_N --json");
+  ASSERT_EQ(right.exit_code, 0) << right.output;
+  const auto r = nlohmann::json::parse(right.output);
+  EXPECT_TRUE(r["explains_data"].get<bool>());
+  EXPECT_LT(r["nrmse_percent"].get<double>(), 2.0);
+}
+
+TEST_F(FitVerdictCli, ACommandColumnIsReadInAmperesOrVoltsAndBadOnesAreRefused) {
+  auto record = fitting::load_hysteresis_record(loop("current[mA]", 1000.0));
+  ASSERT_EQ(record.command.size(), record.time_s.size());
+  EXPECT_EQ(record.command_unit, "A");
+  EXPECT_DOUBLE_EQ(record.command[0], 0.5);
+  record = fitting::load_hysteresis_record(loop("voltage[V]"));
+  EXPECT_EQ(record.command_unit, "V");
+  EXPECT_DOUBLE_EQ(record.command[150], 1.5);
+  const std::string slip = testing::dataset("hidden/baselines/passat_slip.yaml");
+  const auto wrong_unit = run_cli("fit hysteresis " + loop("voltage[A]") + " --model " + slip +
+                                  " --free damping_Ns_per_m");
+  EXPECT_EQ(wrong_unit.exit_code, 2) << wrong_unit.output;
+  EXPECT_NE(wrong_unit.output.find("expected a voltage"), std::string::npos) << wrong_unit.output;
+  const auto no_command = run_cli("fit hysteresis " + loop() + " --model " + slip +
+                                  " --free damping_per_command_Ns_per_m");
+  EXPECT_EQ(no_command.exit_code, 2) << no_command.output;
+  EXPECT_NE(no_command.output.find("command column"), std::string::npos) << no_command.output;
 }
 
 }  // namespace

@@ -11,34 +11,15 @@
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/simulate/strut_test_response.h"
+#include "support/controlled_damper_record.h"
 #include "support/cvode_rig_record.h"
 #include "support/passat.h"
 
 namespace ridefit::fitting {
 namespace {
 
-// A random displacement: 40 sines, log-spaced over 0.5–20 Hz with amplitudes falling as 1/f
-// (about 3 mm RMS), seeded phases.
-struct RandomDisplacement {
-  std::vector<double> amplitude_m, frequency_Hz, phase_rad;
-  explicit RandomDisplacement(unsigned seed) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
-    for (int i = 0; i < 40; ++i) {
-      const double f = 0.5 * std::pow(40.0, i / 39.0);
-      frequency_Hz.push_back(f);
-      amplitude_m.push_back(0.0012 / f);
-      phase_rad.push_back(angle(rng));
-    }
-  }
-  double operator()(double t) const {
-    double x = 0.0;
-    for (std::size_t i = 0; i < amplitude_m.size(); ++i) {
-      x += amplitude_m[i] * std::sin(2.0 * std::numbers::pi * frequency_Hz[i] * t + phase_rad[i]);
-    }
-    return x;
-  }
-};
+// A random displacement: 40 sines log-spaced over 0.5–20 Hz (about 3 mm RMS), seeded phases.
+using RandomDisplacement = testing::RandomRigMotion;
 
 model::StrutTestParameters<double> set_a() { return {2e6, 90.0, 1.5, 600e3, 1500.0, 0, 0, 0}; }
 model::StrutTestParameters<double> set_b() { return {8e5, 30.0, 0.8, 400e3, 2600.0, 0, 0, 0}; }

@@ -12,10 +12,13 @@
 #include <optional>
 
 #include "command_options.h"
+#include "ridefit/fitting/fit_adequacy.h"
 #include "ridefit/fitting/friction_compression.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/psd_fit.h"
+#include "ridefit/fitting/rig_figure.h"
 #include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/fitting/strut_start.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
@@ -52,6 +55,8 @@ struct FitHysteresisFlags {
   std::vector<double> compression_mm;
   std::string output_file;
   std::string plot_file;
+  double max_nrmse_percent = 10.0;
+  bool keep = false;
   bool json = false;
 };
 
@@ -124,9 +129,18 @@ void run(const FitHysteresisFlags& flags) {
                                      ? simulate::RigInterpolation::kLinear
                                      : simulate::RigInterpolation::kSpline;
   options.max_iterations = flags.max_iterations;
+  options.max_nrmse_percent = flags.max_nrmse_percent;
+  // Two starts, the better fit kept: the model file's values (with --start), and the same with
+  // the levels read off the records (friction, damping, offset, gas rate and their command
+  // slopes: fitting/strut_start.h) for the free parameters.
   const auto start = start_from(model_file, flags.starts);
-  const fitting::HysteresisFitResult fit = fitting::fit_hysteresis(records, start, options);
-  if (!fit.converged) {
+  const auto estimate = fitting::estimate_strut_start(records);
+  std::string chosen;
+  const fitting::HysteresisFitResult fit = fitting::fit_hysteresis_from_starts(
+      records, {start, fitting::with_estimates(start, estimate, flags.free)}, options,
+      {"the model file", "levels read off the records"}, &chosen);
+  const bool write_anyway = fit.explains_data || flags.keep;
+  if (!fit.converged && fit.explains_data) {
     throw RunError(fmt::format(
         "the fit did not converge after {} iterations ({}); no fitted model was written. Try "
         "better start values (--start) or fewer free parameters",
@@ -162,7 +176,7 @@ void run(const FitHysteresisFlags& flags) {
                                              se.size() == fc.size() ? se : std::vector<double>());
   }
   std::vector<std::string> written;
-  if (!flags.output_file.empty()) {
+  if (!flags.output_file.empty() && write_anyway) {
     if (records.size() == 1 || flags.per_file.empty()) {
       write_model(flags.model_file, fit.fitted.front(), flags.free, flags.output_file);
       written.push_back(flags.output_file);
@@ -181,18 +195,11 @@ void run(const FitHysteresisFlags& flags) {
   }
   if (!flags.plot_file.empty()) {
     io::Figure figure;
-    figure.title = "measured and fitted hysteresis loops";
+    figure.title = "measured and fitted rig force";
     for (std::size_t r = 0; r < records.size(); ++r) {
-      io::PlotPanel panel =
-          io::xy_panel(std::filesystem::path(records[r].source).filename().string(),
-                       "displacement [mm]", "force [N]");
-      std::vector<double> x_mm;
-      for (double x : records[r].displacement_m) x_mm.push_back(1e3 * x);
-      panel.series.push_back(
-          {"measured", x_mm, records[r].force_N, {}, {}, io::SeriesStyle::kPoints});
-      panel.series.push_back(
-          {"fitted", x_mm, fit.fitted_force_N[r], {}, {}, io::SeriesStyle::kLines});
-      figure.panels.push_back(std::move(panel));
+      for (auto& panel : fitting::rig_record_panels(records[r], fit.fitted_force_N[r], "fitted")) {
+        figure.panels.push_back(std::move(panel));
+      }
     }
     io::draw_figure(figure, flags.plot_file);
   }
@@ -203,6 +210,11 @@ void run(const FitHysteresisFlags& flags) {
                         {"initial_cost", fit.initial_cost},
                         {"final_cost", fit.final_cost},
                         {"residual_rms_N", fit.residual_rms_N},
+                        {"nrmse_percent", fit.nrmse_percent},
+                        {"explains_data", fit.explains_data},
+                        {"adequacy_note", fit.adequacy_note},
+                        {"on_bounds", fit.on_bounds},
+                        {"start", chosen},
                         {"unidentifiable", fit.unidentifiable},
                         {"identifiability_note", fit.identifiability_note},
                         {"parameters", nlohmann::json::array()},
@@ -236,10 +248,13 @@ void run(const FitHysteresisFlags& flags) {
            line->slope_se_N_per_m ? nlohmann::json(*line->slope_se_N_per_m) : nlohmann::json()}};
     }
     std::cout << j.dump(2) << "\n";
+    if (!fit.explains_data) throw RunError(fit.adequacy_note);
     return;
   }
-  std::cout << fmt::format("fit of {} file(s): {} iterations, residual RMS {:.4g} N ({})\n",
-                           records.size(), fit.iterations, fit.residual_rms_N, fit.termination);
+  std::cout << fmt::format(
+      "fit of {} file(s) from {}: {} iterations, residual RMS {:.4g} N, NRMSE {:.2f} % ({})\n",
+      records.size(), chosen, fit.iterations, fit.residual_rms_N, fit.nrmse_percent,
+      fit.explains_data ? fit.termination : "the model does not explain the data");
   for (const auto& p : fit.parameters) {
     std::cout << fmt::format("  {:<30} {:>14.6g}  ± {:<12}{}\n", p.name, p.value,
                              p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : "-",
@@ -264,8 +279,14 @@ void run(const FitHysteresisFlags& flags) {
   if (!fit.identifiability_note.empty()) {
     std::cout << "warning: " << fit.identifiability_note << "\n";
   }
+  for (const auto& bound : fit.on_bounds) std::cout << "  on a bound: " << bound << "\n";
   for (const auto& path : written) std::cout << "Fitted model: " << path << "\n";
   if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
+  if (!fit.explains_data) {
+    throw RunError(fit.adequacy_note + (flags.output_file.empty() || flags.keep
+                                            ? ""
+                                            : "; no fitted model was written (--keep writes it)"));
+  }
 }
 
 struct FitPsdFlags {
@@ -281,6 +302,8 @@ struct FitPsdFlags {
   double relative_tolerance = 1e-4;
   std::string output_file;
   std::string plot_file;
+  double max_nrmse_percent = 10.0;
+  bool keep = false;
   bool json = false;
 };
 
@@ -305,13 +328,15 @@ void run_psd(const FitPsdFlags& flags) {
   options.loss = flags.loss;
   options.relative_tolerance = flags.relative_tolerance;
   const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
-  if (!fit.converged) {
+  const fitting::FitAdequacy adequacy =
+      fitting::assess_psd_fit(fit, model_file.parameters, options, flags.max_nrmse_percent);
+  if (!fit.converged && adequacy.explains_data) {
     throw RunError(fmt::format(
         "the PSD fit did not converge after {} iterations ({}); no fitted model was written. Try "
         "--starts 5 or fewer free parameters",
         fit.iterations, fit.termination));
   }
-  if (!flags.output_file.empty()) {
+  if (!flags.output_file.empty() && (adequacy.explains_data || flags.keep)) {
     YAML::Node root = YAML::LoadFile(flags.model_file);
     for (std::size_t i = 0; i < fit.names.size(); ++i) root[fit.names[i]] = fit.values[i];
     io::write_atomically(flags.output_file, [&](std::ostream& out) {
@@ -337,11 +362,17 @@ void run_psd(const FitPsdFlags& flags) {
     io::draw_figure(figure, flags.plot_file);
   }
   if (flags.json) {
-    nlohmann::json j = {
-        {"converged", fit.converged},           {"termination", fit.termination},
-        {"iterations", fit.iterations},         {"final_cost", fit.final_cost},
-        {"unidentifiable", fit.unidentifiable}, {"identifiability_note", fit.identifiability_note},
-        {"parameters", nlohmann::json::array()}};
+    nlohmann::json j = {{"converged", fit.converged},
+                        {"termination", fit.termination},
+                        {"iterations", fit.iterations},
+                        {"final_cost", fit.final_cost},
+                        {"unidentifiable", fit.unidentifiable},
+                        {"identifiability_note", fit.identifiability_note},
+                        {"nrmse_percent", adequacy.nrmse_percent},
+                        {"explains_data", adequacy.explains_data},
+                        {"adequacy_note", adequacy.note},
+                        {"on_bounds", adequacy.on_bounds},
+                        {"parameters", nlohmann::json::array()}};
     j["correlation"] = correlation_json(fit.correlation);
     for (std::size_t i = 0; i < fit.names.size(); ++i) {
       j["parameters"].push_back(
@@ -351,10 +382,13 @@ void run_psd(const FitPsdFlags& flags) {
             fit.standard_errors[i] ? nlohmann::json(*fit.standard_errors[i]) : nlohmann::json()}});
     }
     std::cout << j.dump(2) << "\n";
+    if (!adequacy.explains_data) throw RunError(adequacy.note);
     return;
   }
-  std::cout << fmt::format("PSD fit of {}: {} iterations, cost {:.4g} ({})\n", flags.file,
-                           fit.iterations, fit.final_cost, fit.termination);
+  std::cout << fmt::format(
+      "PSD fit of {}: {} iterations, cost {:.4g}, amplitude-spectrum NRMSE {:.2f} % ({})\n",
+      flags.file, fit.iterations, fit.final_cost, adequacy.nrmse_percent,
+      adequacy.explains_data ? fit.termination : "the model does not explain the data");
   for (std::size_t i = 0; i < fit.names.size(); ++i) {
     std::cout << fmt::format(
         "  {:<30} {:>14.6g}  ± {}\n", fit.names[i], fit.values[i],
@@ -363,8 +397,15 @@ void run_psd(const FitPsdFlags& flags) {
   if (!fit.identifiability_note.empty()) {
     std::cout << "warning: " << fit.identifiability_note << "\n";
   }
-  if (!flags.output_file.empty()) std::cout << "Fitted model: " << flags.output_file << "\n";
+  for (const auto& bound : adequacy.on_bounds) std::cout << "  on a bound: " << bound << "\n";
+  const bool written = !flags.output_file.empty() && (adequacy.explains_data || flags.keep);
+  if (written) std::cout << "Fitted model: " << flags.output_file << "\n";
   if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
+  if (!adequacy.explains_data) {
+    throw RunError(adequacy.note + (flags.output_file.empty() || flags.keep
+                                        ? ""
+                                        : "; no fitted model was written (--keep writes it)"));
+  }
 }
 
 }  // namespace
@@ -421,7 +462,16 @@ void register_fit(CLI::App& app) {
                    "needs --per-file coulomb_force_N)")
       ->delimiter(',');
   command->add_option("-o,--output", flags->output_file, "Fitted model (YAML, the input's schema)");
-  command->add_option("--plot", flags->plot_file, "Measured and fitted loops (.png or .svg)");
+  command->add_option("--plot", flags->plot_file,
+                      "Measured and fitted force (.png or .svg): loops for periodic tests; force "
+                      "over velocity, a time excerpt and the residual's spectrum for random ones");
+  command
+      ->add_option("--max-nrmse", flags->max_nrmse_percent,
+                   "NRMSE [%] above which the model is reported as not explaining the data")
+      ->check(CLI::Range(0.0, 1000.0).description("in (0, 1000]"));
+  command->add_flag("--keep", flags->keep,
+                    "Write the fitted model even when it does not explain the data (exit 1 all the "
+                    "same)");
   command->add_flag("--json", flags->json,
                     "Values, standard errors, correlation, cost, iterations");
   command->callback([flags] { run(*flags); });
@@ -465,6 +515,14 @@ void register_fit(CLI::App& app) {
   psd_command->add_option("-o,--output", psd->output_file,
                           "Fitted model (YAML, the input's schema)");
   psd_command->add_option("--plot", psd->plot_file, "Measured and fitted PSDs (.png or .svg)");
+  psd_command
+      ->add_option("--max-nrmse", psd->max_nrmse_percent,
+                   "Amplitude-spectrum NRMSE [%] above which the model is reported as not "
+                   "explaining the data")
+      ->check(CLI::Range(0.0, 1000.0).description("in (0, 1000]"));
+  psd_command->add_flag("--keep", psd->keep,
+                        "Write the fitted model even when it does not explain the data (exit 1 "
+                        "all the same)");
   psd_command->add_flag("--json", psd->json, "Values, standard errors, cost, iterations");
   psd_command->callback([psd] { run_psd(*psd); });
 }

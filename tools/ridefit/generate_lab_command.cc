@@ -4,7 +4,9 @@
 // history, and three shim settings whose friction grows with the spring's compression (its
 // Figure 4). Force = the strut-test model at the true parameters (CVODE at rtol 1e-10 on the
 // exact displacement) + load-cell offset + seeded
-// Gaussian noise, quantised like a 16-bit load cell over ±5 kN.
+// Gaussian noise, quantised like a 16-bit load cell over ±5 kN. Last, a semi-active (MR-like)
+// strut under a random displacement with a coil current switching at random
+// (semi_active_random.csv, with a current[A] column).
 #include <fmt/core.h>
 
 #include <cmath>
@@ -70,6 +72,61 @@ void write_test(const std::filesystem::path& path, const std::vector<double>& t,
   });
 }
 
+// An MR-like controlled strut (strut_test.h): passive c = 800 N·s/m and Fc = 40 N, rising by
+// 1500 N·s/m and 180 N per ampere of coil current after a 12 ms lag.
+model::StrutTestParameters<double> semi_active_truth() {
+  model::StrutTestParameters<double> p{3e6, 40.0, 1.0, 500000.0, 800.0, 0.0, 0.0, kOffset_N};
+  p.damping_per_command_Ns_per_m = 1500.0;
+  p.coulomb_force_per_command_N = 180.0;
+  p.command_lag_s = 0.012;
+  return p;
+}
+
+// 30 s at 1 kHz: 40 sines over 0.5–20 Hz (amplitudes ∝ 1/f, about 3 mm RMS) and a current
+// switching between random levels in [0, 2] A every 0.15–0.5 s with 2 ms smooth edges; the force
+// by CVODE at rtol 1e-10 on both exact signals.
+void write_semi_active_test(const std::filesystem::path& path, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::numbers::pi);
+  std::vector<double> amplitude, frequency, phase;
+  for (int i = 0; i < 40; ++i) {
+    frequency.push_back(0.5 * std::pow(40.0, i / 39.0));
+    amplitude.push_back(0.0012 / frequency.back());
+    phase.push_back(angle(rng));
+  }
+  const auto x = [&](double t) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < amplitude.size(); ++i) {
+      sum += amplitude[i] * std::sin(2.0 * std::numbers::pi * frequency[i] * t + phase[i]);
+    }
+    return sum;
+  };
+  std::uniform_real_distribution<double> hold(0.15, 0.5), level(0.0, 2.0);
+  std::vector<double> switch_s, levels{level(rng)};
+  for (double t = hold(rng); t < 30.0; t += hold(rng)) {
+    switch_s.push_back(t);
+    levels.push_back(level(rng));
+  }
+  const auto current = [&](double t) {
+    double u = levels[0];
+    for (std::size_t i = 0; i < switch_s.size(); ++i) {
+      u += 0.5 * (levels[i + 1] - levels[i]) * (1.0 + std::tanh((t - switch_s[i]) / 0.002));
+    }
+    return u;
+  };
+  std::vector<double> t;
+  for (int k = 0; k <= 30000; ++k) t.push_back(k * 1e-3);
+  const std::vector<double> force =
+      simulate::reference_strut_test_force(t, x, semi_active_truth(), current);
+  std::normal_distribution<double> noise(0.0, kNoise_N);
+  io::write_atomically(path, [&](std::ostream& out) {
+    out << "time[s],displacement[mm],force[N],current[A]\n";
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      const double f = std::round((force[k] + noise(rng)) / kQuantum_N) * kQuantum_N;
+      out << fmt::format("{:.4f},{:.6f},{:.3f},{:.5f}\n", t[k], 1e3 * x(t[k]), f, current(t[k]));
+    }
+  });
+}
+
 void run(const GenerateLabFlags& flags) {
   io::prepare_output_directory(flags.output_dir, "OUT_DIR");
   const std::filesystem::path dir(flags.output_dir);
@@ -86,6 +143,7 @@ void run(const GenerateLabFlags& flags) {
     write_test(dir / fmt::format("shim_{}mm.csv", shim_mm), ts, triangle,
                truth(40.0 + 5.0 * shim_mm), rng);
   }
+  write_semi_active_test(dir / "semi_active_random.csv", rng);
   io::write_atomically(dir / "truth.yaml", [&](std::ostream& out) {
     out << fmt::format(
         "# The truth behind the synthetic rig tests of this folder (ridefit generate-lab, seed "
@@ -94,7 +152,12 @@ void run(const GenerateLabFlags& flags) {
         "damping_Ns_per_m: 886.9\nforce_offset_N: {}\nforce_noise_std_N: {}\n"
         "force_quantum_N: {:.6f}\ncoulomb_force_N:\n  triangle_3mm_1mmps.csv: 60\n"
         "  dynamic_60s.csv: 60\n  shim_0mm.csv: 40\n  shim_2mm.csv: 50\n  shim_4mm.csv: 60\n"
-        "# Fc = 40 N + 5 N/mm · spring compression (seed 000 Figure 4's kind of relation)\n",
+        "# Fc = 40 N + 5 N/mm · spring compression (seed 000 Figure 4's kind of relation)\n"
+        "semi_active_random.csv:  # an MR-like strut, its current in the file\n"
+        "  dahl_sigma0_N_per_m: 3.0e6\n  coulomb_force_N: 40\n  dahl_exponent: 1\n"
+        "  top_mount_stiffness_N_per_m: 500000\n  damping_Ns_per_m: 800\n"
+        "  damping_per_command_Ns_per_m: 1500\n  coulomb_force_per_command_N: 180\n"
+        "  command_lag_s: 0.012\n",
         flags.seed, kOffset_N, kNoise_N, kQuantum_N);
   });
   std::cout << "Rig tests written to " << flags.output_dir << "\n";

@@ -9,6 +9,7 @@
 #include <memory>
 #include <set>
 
+#include "ridefit/fitting/fit_adequacy.h"
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/input_error.h"
@@ -48,8 +49,8 @@ struct RecordResidual {
       strut_parameter(p, fields[b]) = blocks[b][0] * T(units[b]);
       strut_parameter(v, fields[b]) = value_of(blocks[b][0]) * units[b];
     }
-    const auto force =
-        simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v, solver);
+    const auto force = simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v,
+                                                     solver, record->command);
     if (!force) return false;
     for (std::size_t k = 0; k < force->size(); ++k) {
       residuals[k] = (*force)[k] - T(record->force_N[k]);
@@ -95,6 +96,38 @@ std::string describe(const Block& block, const std::vector<HysteresisRecord>& re
              : name + " (" + records[static_cast<std::size_t>(block.record)].source + ")";
 }
 
+// NRMSE over all records, parameters on their bounds, and the verdict (fit_adequacy.h).
+void assess_adequacy(const std::vector<HysteresisRecord>& records,
+                     const std::array<std::pair<double, double>, kStrutParameters.size()>& bounds,
+                     const std::vector<Block>& blocks, double max_nrmse_percent,
+                     HysteresisFitResult& result) {
+  double residual = 0.0, spread = 0.0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const auto& measured = records[r].force_N;
+    const auto& fitted = result.fitted_force_N[r];
+    if (fitted.size() != measured.size()) continue;
+    double mean = 0.0;
+    for (double f : measured) mean += f / static_cast<double>(measured.size());
+    for (std::size_t k = 0; k < measured.size(); ++k) {
+      residual += (fitted[k] - measured[k]) * (fitted[k] - measured[k]);
+      spread += (measured[k] - mean) * (measured[k] - mean);
+    }
+  }
+  std::vector<std::string> on_bounds;
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const auto [lo, hi] = bounds[blocks[b].parameter];
+    const std::string text =
+        on_bound(describe(blocks[b], records), result.parameters[b].value, lo, hi);
+    if (!text.empty()) on_bounds.push_back(text);
+  }
+  const FitAdequacy a = judge_fit(spread > 0.0 ? 100.0 * std::sqrt(residual / spread) : 0.0,
+                                  on_bounds, result.unidentifiable, max_nrmse_percent, "force");
+  result.nrmse_percent = a.nrmse_percent;
+  result.on_bounds = a.on_bounds;
+  result.explains_data = a.explains_data;
+  result.adequacy_note = a.note;
+}
+
 }  // namespace
 
 ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
@@ -120,6 +153,17 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   for (const auto& name : options.free) {
     if (!free.insert(strut_parameter_index(name)).second) {
       throw InputError(fmt::format("--free: '{}' is given twice", name));
+    }
+  }
+  const bool any_command = std::any_of(
+      records.begin(), records.end(), [](const HysteresisRecord& r) { return !r.command.empty(); });
+  for (const auto& name : options.free) {
+    if (!any_command && (name == "damping_per_command_Ns_per_m" ||
+                         name == "coulomb_force_per_command_N" || name == "command_lag_s")) {
+      throw InputError(fmt::format(
+          "--free {}: no record has a command column (current[A] or voltage[V]); a controlled "
+          "damper's law needs the command the damper was given",
+          name));
     }
   }
   std::set<std::size_t> per_file;
@@ -265,7 +309,13 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   // Identifiability: the Jacobian with each column scaled by its parameter's size.
   ceres::CRSMatrix crs;
   double cost = 0.0;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs);
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs) ||
+      crs.num_rows == 0 || crs.num_cols == 0) {
+    throw RunError(fmt::format(
+        "fit: the strut model cannot be solved with its derivatives at the fit's end ({}); try "
+        "other start values",
+        summary.message));
+  }
   Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
   for (int row = 0; row < crs.num_rows; ++row) {
     for (int k = crs.rows[static_cast<std::size_t>(row)];
@@ -384,10 +434,12 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
       }
     }
     result.fitted.push_back(fitted);
-    const auto force = simulate::strut_test_force<double>(
-        records[r].time_s, records[r].displacement_m, fitted, fitted, options.solver);
+    const auto force =
+        simulate::strut_test_force<double>(records[r].time_s, records[r].displacement_m, fitted,
+                                           fitted, options.solver, records[r].command);
     result.fitted_force_N.push_back(force ? *force : std::vector<double>());
   }
+  assess_adequacy(records, bounds, blocks, options.max_nrmse_percent, result);
   return result;
 }
 

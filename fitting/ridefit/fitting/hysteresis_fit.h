@@ -23,6 +23,9 @@ struct HysteresisFitOptions {
   double loss_scale_N = 5.0;  // where the robust loss starts to discount a residual
   int max_iterations = 100;
   simulate::StrutTestSolverOptions solver;
+  // Above this NRMSE (%, the residual's RMS over the measured force's spread about its mean) the
+  // fitted model is flagged as not explaining the data.
+  double max_nrmse_percent = 10.0;
 };
 
 struct FittedParameter {
@@ -46,6 +49,14 @@ struct HysteresisFitResult {
   // by its parameter's value), with the reason in words.
   std::vector<std::string> unidentifiable;
   std::string identifiability_note;
+  // Whether the model explains the data: the NRMSE of the fitted force over all records (%),
+  // the free parameters that ended on a bound, and the verdict. A fit is flagged when its NRMSE
+  // is above max_nrmse_percent, or when parameters end on bounds while the data leave some
+  // parameters undetermined (a collapsed fit: the model gave up a mechanism to imitate another).
+  double nrmse_percent = 0.0;
+  std::vector<std::string> on_bounds;
+  bool explains_data = true;
+  std::string adequacy_note;                               // why not, in words ("" when it does)
   std::vector<std::vector<double>> fitted_force_N;         // per record, at the fitted parameters
   std::vector<model::StrutTestParameters<double>> fitted;  // per record
 };

@@ -26,7 +26,10 @@ model::StrutTestParameters<double> strut_on_rig(const model::QuarterCarParameter
           0.0,
           0.0,
           q.static_friction_force_N,
-          q.stribeck_velocity_m_per_s};
+          q.stribeck_velocity_m_per_s,
+          q.damping_per_command_Ns_per_m,
+          q.coulomb_force_per_command_N,
+          q.command_lag_s};
 }
 
 model::StrutTestParameters<double> strut_on_rig(const model::QuarterCar& car) {

@@ -22,7 +22,10 @@ struct StrutParameterInfo {
 // The Stribeck pair acts only when stribeck_velocity_m_per_s > 0 (its default 0 is off and below
 // its bound, so fitting it needs a --start or a model file that has it); static_friction_force_N
 // is read only then.
-inline constexpr std::array<StrutParameterInfo, 10> kStrutParameters{{
+// The controlled damper's slopes act only with a command column; its lag τ only when > 0 (0 is
+// below its bound: fitting it needs a start). The load cell's chain (gain, delay, cutoff) is
+// rig-only; a cutoff of 0 is off and below its bound likewise.
+inline constexpr std::array<StrutParameterInfo, 16> kStrutParameters{{
     {"dahl_sigma0_N_per_m", 1e3, 1e10, true},
     {"coulomb_force_N", 0.0, 1e4, true},
     {"dahl_exponent", 0.2, 5.0, true},
@@ -33,6 +36,12 @@ inline constexpr std::array<StrutParameterInfo, 10> kStrutParameters{{
     {"force_offset_N", -1e4, 1e4, false},
     {"static_friction_force_N", 0.0, 1e4, true},
     {"stribeck_velocity_m_per_s", 1e-5, 10.0, true},
+    {"damping_per_command_Ns_per_m", -1e5, 1e6, true},
+    {"coulomb_force_per_command_N", -1e4, 1e4, true},
+    {"command_lag_s", 1e-4, 1.0, true},
+    {"force_gain", 0.5, 2.0, false},
+    {"force_delay_s", 0.0, 0.1, false},
+    {"force_sensor_cutoff_Hz", 1.0, 1e5, false},
 }};
 
 // The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas
@@ -67,8 +76,20 @@ T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
       return p.force_offset_N;
     case 8:
       return p.static_friction_force_N;
-    default:
+    case 9:
       return p.stribeck_velocity_m_per_s;
+    case 10:
+      return p.damping_per_command_Ns_per_m;
+    case 11:
+      return p.coulomb_force_per_command_N;
+    case 12:
+      return p.command_lag_s;
+    case 13:
+      return p.force_gain;
+    case 14:
+      return p.force_delay_s;
+    default:
+      return p.force_sensor_cutoff_Hz;
   }
 }
 

@@ -30,7 +30,7 @@ struct KnownUnit {
 // tools write. Factors are exact by definition (g is the standard gravity of ISO 80000-3).
 constexpr double kG = 9.80665;
 constexpr double kDeg = 0.017453292519943295;  // π/180
-constexpr std::array<KnownUnit, 38> kUnits{{
+constexpr std::array<KnownUnit, 42> kUnits{{
     {"s", 1.0, "s"},
     {"ms", 1e-3, "s"},
     {"m", 1.0, "m"},
@@ -51,6 +51,10 @@ constexpr std::array<KnownUnit, 38> kUnits{{
     {"deg/s", kDeg, "rad/s"},
     {"rad/s^2", 1.0, "rad/s^2"},
     {"deg/s^2", kDeg, "rad/s^2"},
+    {"A", 1.0, "A"},
+    {"mA", 1e-3, "A"},
+    {"V", 1.0, "V"},
+    {"mV", 1e-3, "V"},
     {"1", 1.0, "1"},
     {"-", 1.0, "1"},
     // Power spectral densities (one-sided): acceleration, displacement, angular

@@ -131,6 +131,17 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
   }
 }
 
+// 6. Controlled damper: each key optional (0 = off).
+void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<double>& p) {
+  if (file.has("damping_per_command_Ns_per_m")) {
+    p.damping_per_command_Ns_per_m = file.number_in("damping_per_command_Ns_per_m", -1e5, 1e6);
+  }
+  if (file.has("coulomb_force_per_command_N")) {
+    p.coulomb_force_per_command_N = file.number_in("coulomb_force_per_command_N", -1e4, 1e4);
+  }
+  if (file.has("command_lag_s")) p.command_lag_s = file.number_in("command_lag_s", 0.0, 1.0);
+}
+
 QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_state) {
   file.choice("model", {"quarter_car"});
   QuarterCarFile result{};
@@ -171,6 +182,7 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
     p.dahl_exponent = 1.0;
   }
   read_optional_effects(file, p);
+  read_controlled_damper(file, p);
   file.finish();
   return result;
 }

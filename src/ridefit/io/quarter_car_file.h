@@ -48,6 +48,12 @@ namespace ridefit::io {
 //   #   Fc(v) = Fc + (Fs − Fc)·exp(−(v/v_s)²).
 //   stribeck_velocity_m_per_s: 0.01        # v_s, in (0, 10]; switches it on
 //   static_friction_force_N: 90            # Fs, in [coulomb_force_N, 1e5], default Fc
+//   # Controlled (semi-active) damper, strut_test.h: c(ū) = c + c_b·ū, Fc(ū) = Fc + Fc_b·ū,
+//   # ū' = (u − ū)/τ with u the record's command (current[A] or voltage[V]); each optional.
+//   # On the road the command is 0 (no command input yet); rig tests read it from the record.
+//   damping_per_command_Ns_per_m: 2000     # c_b per A or V, in [-1e5, 1e6]
+//   coulomb_force_per_command_N: 200       # Fc_b per A or V, in [-1e4, 1e4]
+//   command_lag_s: 0.01                    # τ, in [0, 1]; 0 = ū follows u at once
 //
 // Every numeric key can be given by `--set key=value` (tyre_lift_off=1 or 0 included).
 // Unknown keys, missing keys, non-numbers and out-of-range values are InputErrors naming

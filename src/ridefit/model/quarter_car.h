@@ -47,6 +47,12 @@ struct QuarterCarParameters {
   // Stribeck level of the Dahl element, stribeck_curve.h; v_s = 0 off.
   T static_friction_force_N{0.0};
   T stribeck_velocity_m_per_s{0.0};
+  // A controlled damper (strut_test.h): damping and friction level affine in the lagged command.
+  // The road models have no command input yet: on the road the command is 0 (c and Fc above);
+  // the rig tests read it from the record.
+  T damping_per_command_Ns_per_m{0.0};
+  T coulomb_force_per_command_N{0.0};
+  T command_lag_s{0.0};
 
   template <typename U>
   QuarterCarParameters<U> cast() const {
@@ -71,7 +77,10 @@ struct QuarterCarParameters {
             U(damper_knee_velocity_m_per_s),
             U(damping_above_knee_Ns_per_m),
             U(static_friction_force_N),
-            U(stribeck_velocity_m_per_s)};
+            U(stribeck_velocity_m_per_s),
+            U(damping_per_command_Ns_per_m),
+            U(coulomb_force_per_command_N),
+            U(command_lag_s)};
   }
 
   // Coil spring in series with the top mount's spring path.

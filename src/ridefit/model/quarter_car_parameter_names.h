@@ -12,7 +12,7 @@ namespace ridefit::model {
 // The continuous quarter-car parameters by their YAML key (design.md's names), in one table, so
 // the fits and the diagnosis address a parameter by name and reach the same field for doubles
 // and for Jets. tyre_lift_off is a switch, not a parameter, and is not listed.
-inline constexpr std::array<std::string_view, 21> kQuarterCarParameterNames{
+inline constexpr std::array<std::string_view, 24> kQuarterCarParameterNames{
     "sprung_mass_kg",
     "unsprung_mass_kg",
     "tyre_stiffness_N_per_m",
@@ -33,7 +33,10 @@ inline constexpr std::array<std::string_view, 21> kQuarterCarParameterNames{
     "damper_knee_velocity_m_per_s",
     "damping_above_knee_Ns_per_m",
     "static_friction_force_N",
-    "stribeck_velocity_m_per_s"};
+    "stribeck_velocity_m_per_s",
+    "damping_per_command_Ns_per_m",
+    "coulomb_force_per_command_N",
+    "command_lag_s"};
 
 // Index of `name` in kQuarterCarParameterNames, or none.
 inline std::optional<std::size_t> quarter_car_parameter_index(std::string_view name) {
@@ -66,7 +69,10 @@ T& quarter_car_parameter(QuarterCarParameters<T>& p, std::size_t index) {
                        &p.damper_knee_velocity_m_per_s,
                        &p.damping_above_knee_Ns_per_m,
                        &p.static_friction_force_N,
-                       &p.stribeck_velocity_m_per_s};
+                       &p.stribeck_velocity_m_per_s,
+                       &p.damping_per_command_Ns_per_m,
+                       &p.coulomb_force_per_command_N,
+                       &p.command_lag_s};
   static_assert(sizeof(fields) / sizeof(fields[0]) == kQuarterCarParameterNames.size());
   return *fields[index];
 }

@@ -45,37 +45,119 @@ struct StrutTestSolverOptions {
   const EsdirkStepHistory* frozen_steps = nullptr;
 };
 
+// The state a strut test starts from: at rest at the first sample (z_c = x₀, F_f = 0) and, with a
+// lagged command, the fluid settled at the first command (ū = u₀).
+inline std::vector<double> strut_test_start(const model::StrutTestParameters<double>& values,
+                                            double displacement_m, double command) {
+  std::vector<double> y0 = {displacement_m, 0.0};
+  if (model::StrutTest::state_count(values) == 3) y0.push_back(command);
+  return y0;
+}
+
+// The load cell's reading of a force history (model::StrutTestParameters' measurement chain):
+// gain × the force delayed by force_delay_s (a cubic between samples; the force
+// before the first sample is the first) and low-passed at force_sensor_cutoff_Hz (first order,
+// or two first-order stages for order 2, each discretised exactly for a force linear between
+// samples, started settled). The load-cell offset is not scaled. Identity for an ideal sensor.
+template <typename T>
+void apply_force_sensor(std::span<const double> time_s, const model::StrutTestParameters<T>& p,
+                        std::vector<T>& force) {
+  using std::exp;
+  const bool delayed = p.force_delay_s > 0.0;
+  const bool filtered = p.force_sensor_cutoff_Hz > 0.0;
+  // (with derivatives the gain is applied even at 1: its tangent is the force itself)
+  if (!delayed && !filtered && std::is_same_v<T, double> && p.force_gain == 1.0) return;
+  const std::size_t n = force.size();
+  std::vector<T> physical(n);
+  for (std::size_t k = 0; k < n; ++k) physical[k] = force[k] - p.force_offset_N;
+  if (delayed) {
+    std::vector<T> shifted(n);
+    std::size_t i = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const T t = T(time_s[k]) - p.force_delay_s;
+      if (t <= time_s[0]) {
+        shifted[k] = physical[0];
+        continue;
+      }
+      while (i + 1 < n && t > time_s[i + 1]) ++i;
+      // F(t_k − δ) on the segment [t_i, t_i+1] by a Catmull-Rom cubic (continuous slope, so the
+      // cost is smooth in δ across samples); its weight carries δ's derivative.
+      const double h = time_s[i + 1] - time_s[i];
+      const T w = (t - time_s[i]) / h;
+      const T& f0 = physical[i > 0 ? i - 1 : 0];
+      const T& f1 = physical[i];
+      const T& f2 = physical[i + 1];
+      const T& f3 = physical[i + 2 < n ? i + 2 : n - 1];
+      shifted[k] = f1 + T(0.5) * w *
+                            ((f2 - f0) + w * ((T(2.0) * f0 - T(5.0) * f1 + T(4.0) * f2 - f3) +
+                                              w * (T(3.0) * (f1 - f2) + f3 - f0)));
+    }
+    physical = std::move(shifted);
+  }
+  if (filtered) {
+    const T tau = T(1.0) / (T(2.0 * 3.14159265358979323846) * p.force_sensor_cutoff_Hz);
+    const int stages = p.force_sensor_order == 2 ? 2 : 1;
+    for (int stage = 0; stage < stages; ++stage) {
+      T y = physical[0];
+      T previous = physical[0];
+      for (std::size_t k = 1; k < n; ++k) {
+        const double h = time_s[k] - time_s[k - 1];
+        const T a = exp(-h / tau);
+        const T b1 = tau / h * (T(1.0) - a) - a;  // first-order hold: exact for a ramp
+        const T b0 = T(1.0) - a - b1;
+        y = a * y + b0 * physical[k] + b1 * previous;
+        previous = physical[k];
+        physical[k] = y;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) force[k] = p.force_gain * physical[k] + p.force_offset_N;
+}
+
 // The steps the adaptive run takes for this record and strut: to freeze them
 // (StrutTestSolverOptions::frozen_steps) when checking the tangents by finite differences.
 inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
                                           std::span<const double> displacement_m,
                                           const model::StrutTestParameters<double>& values,
-                                          const StrutTestSolverOptions& options = {}) {
+                                          const StrutTestSolverOptions& options = {},
+                                          std::span<const double> command = {}) {
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
+  const RigDisplacement u(time_s, command.empty() ? displacement_m : command,
+                          RigInterpolation::kLinear);
   EsdirkStepHistory history;
-  integrate_esdirk(StrutTestSystem(values, x), {displacement_m[0], 0.0},
+  integrate_esdirk(StrutTestSystem(values, x, command.empty() ? nullptr : &u),
+                   strut_test_start(values, displacement_m[0], command.empty() ? 0.0 : command[0]),
                    std::vector<double>(time_s.begin(), time_s.end()), esdirk_options(options),
                    &history);
   return history;
 }
 
 // `parameters` and `values` hold the same numbers: `values` as doubles for the run in doubles
-// (for T = double pass the same struct twice).
+// (for T = double pass the same struct twice). `command`: the record's command (current or
+// voltage) at its samples, for a controlled damper; empty for none (a command of 0). The result
+// is what the load cell reads (apply_force_sensor).
 template <typename T>
 std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
                                                std::span<const double> displacement_m,
                                                const model::StrutTestParameters<T>& parameters,
                                                const model::StrutTestParameters<double>& values,
-                                               const StrutTestSolverOptions& options = {}) {
+                                               const StrutTestSolverOptions& options = {},
+                                               std::span<const double> command = {}) {
   const std::size_t n = time_s.size();
   std::vector<T> force;
   if (n == 0) return force;
   force.reserve(n);
   const RigDisplacement x(time_s, displacement_m, options.interpolation);
-  const StrutTestSystem system(values, x);
+  // A command switches between levels: straight lines between samples, never an overshoot.
+  const RigDisplacement u(time_s, command.empty() ? displacement_m : command,
+                          RigInterpolation::kLinear);
+  const RigDisplacement* u_or_none = command.empty() ? nullptr : &u;
+  const StrutTestSystem system(values, x, u_or_none);
   const IntegratorOptions integrator = esdirk_options(options);
   const std::vector<double> times(time_s.begin(), time_s.end());
-  const std::vector<double> y0 = {displacement_m[0], 0.0};
+  const std::vector<double> y0 =
+      strut_test_start(values, displacement_m[0], command.empty() ? 0.0 : command[0]);
+  const auto command_at = [&](double t) { return u_or_none ? u.at(t) : 0.0; };
   try {
     if constexpr (std::is_same_v<T, double>) {
       const Trajectory trajectory =
@@ -88,12 +170,13 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
       EsdirkStepHistory own_history;
       const EsdirkStepHistory& history =
           esdirk_steps_or_frozen(system, y0, times, integrator, options.frozen_steps, own_history);
-      const T y0_t[2] = {T(y0[0]), T(y0[1])};
+      T y0_t[3] = {T(y0[0]), T(y0[1]), T(0.0)};
+      if (y0.size() == 3) y0_t[2] = T(y0[2]);
       force.push_back(model::StrutTest::force_N(y0_t, T(displacement_m[0]), parameters));
-      const bool ok = replay_esdirk<T, 2>(
-          history, system, std::span<const T>(y0_t, 2), time_s,
+      const bool ok = replay_esdirk<T, 3>(
+          history, system, std::span<const T>(y0_t, y0.size()), time_s,
           [&](double t, const T* y, T* ydot) {
-            model::StrutTest::derivatives(y, T(x.at(t)), parameters, ydot);
+            model::StrutTest::derivatives(y, T(x.at(t)), T(command_at(t)), parameters, ydot);
           },
           [&](std::size_t k, double, const T* y) {
             force.push_back(model::StrutTest::force_N(y, T(displacement_m[k]), parameters));
@@ -104,6 +187,7 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
     return std::nullopt;
   }
   if (force.size() != n) return std::nullopt;
+  apply_force_sensor(time_s, parameters, force);
   return force;
 }
 

@@ -1,5 +1,7 @@
 #include "ridefit/simulate/strut_test_system.h"
 
+#include <ceres/jet.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -39,11 +41,45 @@ double RigDisplacement::interpolate(double time_s) const {
 }
 
 bool StrutTestSystem::derivatives(double t_s, const double* y, double* ydot) const {
-  model::StrutTest::derivatives(y, x_.at(t_s), p_, ydot);
-  return std::isfinite(ydot[0]) && std::isfinite(ydot[1]);
+  model::StrutTest::derivatives(y, x_.at(t_s), command_at(t_s), p_, ydot);
+  bool finite = true;
+  for (int i = 0; i < size(); ++i) finite = finite && std::isfinite(ydot[i]);
+  return finite;
+}
+
+bool StrutTestSystem::commanded_jacobian(double t_s, const double* y,
+                                         double* jacobian_column_major) const {
+  using Jet = ceres::Jet<double, 3>;
+  const int n = size();
+  Jet yj[3], ydot[3];
+  for (int i = 0; i < n; ++i) yj[i] = Jet(y[i], i);
+  const model::StrutTestParameters<Jet> p{Jet(p_.dahl_sigma0_N_per_m),
+                                          Jet(p_.coulomb_force_N),
+                                          Jet(p_.dahl_exponent),
+                                          Jet(p_.top_mount_stiffness_N_per_m),
+                                          Jet(p_.damping_Ns_per_m),
+                                          Jet(p_.gas_force_N),
+                                          Jet(p_.gas_stiffness_N_per_m),
+                                          Jet(p_.force_offset_N),
+                                          Jet(p_.static_friction_force_N),
+                                          Jet(p_.stribeck_velocity_m_per_s),
+                                          Jet(p_.damping_per_command_Ns_per_m),
+                                          Jet(p_.coulomb_force_per_command_N),
+                                          Jet(p_.command_lag_s)};
+  model::StrutTest::derivatives(yj, Jet(x_.at(t_s)), Jet(command_at(t_s)), p, ydot);
+  bool finite = true;
+  for (int column = 0; column < n; ++column) {
+    for (int row = 0; row < n; ++row) {
+      const double value = ydot[row].v[column];
+      jacobian_column_major[column * n + row] = value;
+      finite = finite && std::isfinite(value);
+    }
+  }
+  return finite;
 }
 
 bool StrutTestSystem::jacobian(double t_s, const double* y, double* jacobian_column_major) const {
+  if (p_.commanded()) return commanded_jacobian(t_s, y, jacobian_column_major);
   // The partial derivatives written out: this runs once per stage of every tangent replay, where
   // a generic autodiff spent most of its time in exp and log for the Dahl power. The rig's top
   // mount is linear and its damper symmetric (model::StrutTestParameters), so
@@ -85,11 +121,13 @@ bool StrutTestSystem::jacobian(double t_s, const double* y, double* jacobian_col
 }
 
 double StrutTestSystem::typical_magnitude(int state_index) const {
+  if (state_index == 2) return 1.0;  // the command, in A or V
   return state_index == 0 ? 1e-3 : std::max(1.0, p_.coulomb_force_N);
 }
 
 void StrutTestSystem::switching(double t_s, const double* y, double* g) const {
-  const auto path = p_.damper_path();
+  const bool lagged = p_.commanded() && p_.has_lag();
+  const auto path = p_.damper_path(lagged ? y[2] : command_at(t_s));
   g[0] = path.damper_rate_m_per_s(path.path_force_N(x_.at(t_s), y[0]), y[1]);
 }
 

@@ -47,25 +47,36 @@ class RigDisplacement {
 };
 
 // The strut on the rig (model::StrutTest) as a first-order system for the integrators:
-// states [z_c, F_f], the rig's displacement imposed. Its switching function is the damper's
-// sliding velocity (the Dahl law's kink), when the strut has friction.
+// states [z_c, F_f] (and ū for a controlled damper with a lag), the rig's displacement imposed
+// and, for a controlled damper, the command read from `command` (null: a command of 0). Its
+// switching function is the damper's sliding velocity (the Dahl law's kink), when the strut has
+// friction.
 class StrutTestSystem : public OdeSystem {
  public:
   StrutTestSystem(const model::StrutTestParameters<double>& parameters,
-                  const RigDisplacement& displacement)
-      : p_(parameters), x_(displacement) {}
-  int size() const override { return 2; }
+                  const RigDisplacement& displacement, const RigDisplacement* command = nullptr)
+      : p_(parameters), x_(displacement), u_(command) {}
+  int size() const override { return model::StrutTest::state_count(p_); }
+  // The command at t (0 without a command signal).
+  double command_at(double t_s) const { return u_ != nullptr ? u_->at(t_s) : 0.0; }
   bool derivatives(double t_s, const double* y, double* ydot) const override;
   bool jacobian(double t_s, const double* y, double* jacobian_column_major) const override;
   // z_c on the scale of a rig stroke (1 mm), F_f on the scale of Fc.
   double typical_magnitude(int state_index) const override;
   double max_step_s() const override { return 0.0; }
-  int switching_count() const override { return p_.coulomb_force_N > 0.0 ? 1 : 0; }
+  int switching_count() const override {
+    return p_.coulomb_force_N > 0.0 || p_.coulomb_force_per_command_N != 0.0 ? 1 : 0;
+  }
   void switching(double t_s, const double* y, double* g) const override;
 
  private:
+  // The Jacobian of a controlled damper, by forward autodiff of model::StrutTest (its states
+  // and the command's lag are few; the passive law is written out by hand in jacobian()).
+  bool commanded_jacobian(double t_s, const double* y, double* jacobian_column_major) const;
+
   model::StrutTestParameters<double> p_;
   const RigDisplacement& x_;
+  const RigDisplacement* u_;
 };
 
 }  // namespace ridefit::simulate

@@ -56,11 +56,16 @@ DiagnosisModel rig_passat(double coulomb_force_N = 60.0, double top_mount_N_per_
 }
 
 bool loops_only(std::string_view id) {
-  return id == "gas_force" || id == "friction_velocity_dependence";
+  return id == "gas_force" || id == "friction_velocity_dependence" || id == "command_dependence" ||
+         id.starts_with("sensor_");
 }
 
 DiagnosisModel baseline_for(std::string_view id) {
-  if (loops_only(id)) return rig_passat();
+  if (loops_only(id)) {
+    DiagnosisModel m = rig_passat();
+    m.has_command = id == "command_dependence";
+    return m;
+  }
   return id == "top_mount_compliance" ? rigid_passat() : bare_passat();
 }
 
@@ -72,12 +77,13 @@ double value_in(const DiagnosisModel& m, const std::string& name) {
 TEST(EffectLibrary, HoldsTheIssuesIdsSortedAndNamesThemWhenOneIsUnknown) {
   std::vector<std::string> ids;
   for (const auto& e : effect_library()) ids.emplace_back(e->id());
-  EXPECT_EQ(ids.size(), 10u);
+  EXPECT_EQ(ids.size(), 14u);
   EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
   for (const char* id :
        {"damper_friction", "top_mount_compliance", "top_mount_amplitude_stiffening", "tyre_damping",
         "damper_asymmetry", "damper_digressive", "bump_stop", "tyre_lift_off",
-        "friction_velocity_dependence", "gas_force"}) {
+        "friction_velocity_dependence", "gas_force", "command_dependence", "sensor_gain",
+        "sensor_delay", "sensor_band_limit"}) {
     EXPECT_EQ(find_effect(id).id(), id);
     EXPECT_GT(find_effect(id).description().size(), 40u) << id;
   }
@@ -122,6 +128,13 @@ TEST(EffectLibrary, EachEffectStartsInsideItsBoundsAndCannotBeAddedTwice) {
     EXPECT_NE(find_effect(id).not_applicable(rig_passat()), "") << id;
   }
   EXPECT_NE(find_effect("gas_force").not_applicable(bare_passat()), "");
+  // A controlled damper's law needs a command column; the sensor delay cannot show in spectra.
+  EXPECT_NE(find_effect("command_dependence").not_applicable(rig_passat()).find("command column"),
+            std::string::npos);
+  EXPECT_NE(find_effect("sensor_delay").not_applicable(bare_passat()).find("auto-spectra"),
+            std::string::npos);
+  EXPECT_TRUE(find_effect("sensor_gain").measurement_chain());
+  EXPECT_FALSE(find_effect("damper_friction").measurement_chain());
   EXPECT_NE(find_effect("friction_velocity_dependence").not_applicable(bare_passat()), "");
   EXPECT_NE(find_effect("friction_velocity_dependence").not_applicable(rig_passat(0.0)), "");
   EXPECT_EQ(find_effect("damper_friction").not_applicable(rig_passat(0.0)), "");

@@ -69,6 +69,7 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   }
   s.training_cost = fit.final_cost;
   s.iterations = fit.iterations;
+  s.unidentifiable = fit.unidentifiable;
   s.training_residuals =
       fit.frequency_Hz.size() * ((data.training.body_acc_m_per_s2.empty() ? 0 : 1) +
                                  (data.training.wheel_acc_m_per_s2.empty() ? 0 : 1));
@@ -107,6 +108,7 @@ DiagnosisResult result_of(const Selection& selection, DataKind kind) {
   result.baseline_held_out_cost = selection.baseline.held_out_cost;
   result.rounds = selection.rounds;
   result.named = selection.named;
+  result.not_identifiable = selection.not_identifiable;
   result.final_model = selection.final_fit.model;
   result.final_parameters = selection.final_fit.values;
   return result;
@@ -133,8 +135,10 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   // screening fit's optimum: what the report, the map and model.yaml show.
   const PsdFitOptions final_fit = with_tolerance(options.final_relative_tolerance);
   const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& free,
-                              const ParameterBounds& bounds, bool reported) {
-    return fit_and_score(start, free, bounds, data, reported ? final_fit : screening, map_options);
+                              const ParameterBounds& bounds, FitPurpose purpose) {
+    PsdFitOptions settings = purpose == FitPurpose::kReported ? final_fit : screening;
+    if (purpose == FitPurpose::kProbe) settings.max_iterations = 0;
+    return fit_and_score(start, free, bounds, data, settings, map_options);
   };
   SelectionOptions selection_options = options.selection;
   selection_options.gap_unit = "dB";
@@ -171,7 +175,7 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   }
   std::vector<std::string> unexplained;
   for (const auto& region : result.unexplained) unexplained.push_back(describe(region));
-  result.verdict = verdict_of(result.named, unexplained);
+  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable);
   return result;
 }
 

@@ -60,7 +60,9 @@ struct DiagnosisResult {
   double gap_after = 0.0;
   std::vector<DiagnosisRound> rounds;
   std::vector<std::string> named;  // accepted effect ids, in order
-  DiagnosisModel final_model;      // the baseline with the named effects, refitted
+  // Effects the records could not identify (Selection::not_identifiable).
+  std::vector<std::string> not_identifiable;
+  DiagnosisModel final_model;  // the baseline with the named effects, refitted
   std::vector<FittedValue> final_parameters;
   // "missing effect found: …", "no missing effect found", or the unexplained disagreement.
   std::string verdict;

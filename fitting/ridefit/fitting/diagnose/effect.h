@@ -25,6 +25,8 @@ struct DiagnosisModel {
   // The baseline's parameters every fit frees (set by the diagnosis; an effect whose parameter
   // one of them already carries leaves that one out).
   std::vector<std::string> free{};
+  // The records carry a damper command (a current or voltage column): set by the diagnosis.
+  bool has_command = false;
 };
 
 // A parameter a fit frees, with the bounds that keep it physical.
@@ -58,6 +60,13 @@ class Effect {
   virtual std::string not_applicable(const DiagnosisModel& baseline) const = 0;
   // The change that adds it, with a start inside its bounds. Called only when applicable.
   virtual EffectChange change(const DiagnosisModel& baseline) const = 0;
+  // True for effects of the measurement chain (a sensor's gain, delay or band limit) rather than
+  // of the car or strut: the report keeps "the model misses physics" apart from "the measurement
+  // chain differs".
+  virtual bool measurement_chain() const { return false; }
+  // What records would show the effect, for when its parameters cannot be identified from the
+  // records at hand (e.g. "sliding velocities around v_s"); "" when there is nothing to add.
+  virtual std::string_view identifiable_from() const { return ""; }
 };
 
 // Every effect, sorted by id. Each lives in diagnose/effects/<id>.cc and defines

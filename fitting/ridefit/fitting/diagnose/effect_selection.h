@@ -34,15 +34,21 @@ struct ScoredFit {
   // record's force).
   std::vector<std::vector<double>> held_out_signals;
   std::string failure;  // "" when the fit and its scoring worked
+  // Free parameters the training data could not determine (the fit's identifiability check).
+  std::vector<std::string> unidentifiable;
 };
 
 using ParameterBounds = std::map<std::string, std::pair<double, double>>;
 
+// What a fit is for: screening an effect, the finer fit the report shows, or a probe that does
+// not iterate and only says which parameters the data determine at the start.
+enum class FitPurpose { kScreening, kReported, kProbe };
+
 // Fits `free` of `start` within `bounds` on the training data and scores the result on the
-// held-out data; `reported` asks for the finer settings of a fit the report shows.
+// held-out data, with the settings `purpose` asks for.
 using FitAndScore =
     std::function<ScoredFit(const DiagnosisModel& start, const std::vector<std::string>& free,
-                            const ParameterBounds& bounds, bool reported)>;
+                            const ParameterBounds& bounds, FitPurpose purpose)>;
 
 // One effect tried in one round.
 struct EffectTrial {
@@ -59,7 +65,11 @@ struct EffectTrial {
   double bic_change = 0.0;            // BIC − the round's starting BIC (negative: better)
   double held_out_gap = 0.0;          // the gap on the held-out data (dB, or NRMSE %)
   bool significant = false;           // passes both tests
-  DiagnosisModel model;               // fitted, with the effect
+  // The effect's own parameters the training data could not determine: the records cannot show
+  // the effect (EffectTrial::not_identifiable says what would).
+  std::vector<std::string> unidentifiable;
+  std::string not_identifiable;  // "" or "not identifiable from these records: needs …"
+  DiagnosisModel model;          // fitted, with the effect
 };
 
 struct DiagnosisRound {
@@ -86,21 +96,31 @@ struct Selection {
   std::vector<DiagnosisRound> rounds;
   std::vector<std::string> named;  // accepted ids, in order
   ScoredFit final_fit;             // the reported fit with the named effects
+  // Effects of the last round that the records could not identify, each "id not identifiable
+  // from these records (…): needs …" (they are neither named nor ruled out).
+  std::vector<std::string> not_identifiable;
 };
 
 // Fits the baseline's `free` parameters, then, round by round, tries each applicable effect of
 // `library` in parallel (adds it, refits its and the baseline's free parameters), ranks them by
 // held-out cost and accepts the best if significant; stops when none is or after max_effects.
+// Each effect is fitted from the model so far and, when the fitted baseline moved a shared
+// parameter by more than 10 % from the baseline's own value (it may have absorbed the missing
+// effect: damping imitating friction), also with the shared parameters back at the baseline's
+// values; the better training cost is kept.
 // RunError when the baseline cannot be fitted.
 Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string> free,
                          ParameterBounds bounds, const std::vector<const Effect*>& library,
                          const FitAndScore& fit, const SelectionOptions& options,
                          const std::function<void(const std::string&)>& say);
 
-// The verdict: "missing effect found: a, then b", "no missing effect found", and/or the first
-// of the `unexplained` disagreements (described in words) with how many more remain.
+// The verdict: "missing effect found: a, then b" for the physics named, "the measurement chain
+// differs: c" for the named effects of the measurement chain (Effect::measurement_chain), "no
+// missing effect found", and/or the first of the `unexplained` disagreements (described in words)
+// with how many more remain; then the effects the records could not identify.
 std::string verdict_of(const std::vector<std::string>& named,
-                       const std::vector<std::string>& unexplained);
+                       const std::vector<std::string>& unexplained,
+                       const std::vector<std::string>& not_identifiable = {});
 
 // The effects to try: the whole library for an empty list, else those ids (InputError for an
 // unknown one).

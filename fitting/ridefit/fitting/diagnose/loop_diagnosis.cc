@@ -2,10 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/fitting/strut_start.h"
 #include "ridefit/io/input_error.h"
 
 namespace ridefit::fitting::diagnose {
@@ -17,7 +20,12 @@ HysteresisRecord slice(const HysteresisRecord& r, std::size_t begin, std::size_t
     return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(begin),
                                v.begin() + static_cast<std::ptrdiff_t>(end));
   };
-  return {r.source + " (" + part + ")", cut(r.time_s), cut(r.displacement_m), cut(r.force_N)};
+  return {r.source + " (" + part + ")",
+          cut(r.time_s),
+          cut(r.displacement_m),
+          cut(r.force_N),
+          r.command.empty() ? std::vector<double>() : cut(r.command),
+          r.command_unit};
 }
 
 std::vector<std::string> default_free(const model::StrutTestParameters<double>& strut) {
@@ -26,22 +34,48 @@ std::vector<std::string> default_free(const model::StrutTestParameters<double>& 
   return free;
 }
 
-// The held-out forces of `strut`, or none when the model cannot be solved on one of them.
+// `lead` followed by `r` (one record; the lead's last sample is before r's first).
+HysteresisRecord joined(const HysteresisRecord& lead, const HysteresisRecord& r) {
+  HysteresisRecord all = lead;
+  auto append = [](std::vector<double>& to, const std::vector<double>& from) {
+    to.insert(to.end(), from.begin(), from.end());
+  };
+  append(all.time_s, r.time_s);
+  append(all.displacement_m, r.displacement_m);
+  append(all.force_N, r.force_N);
+  if (!lead.command.empty() && !r.command.empty()) {
+    append(all.command, r.command);
+  } else {
+    all.command.clear();
+  }
+  return all;
+}
+
+// The held-out forces of `strut` (each record run through its lead-in first), or none when the
+// model cannot be solved on one of them.
 std::optional<std::vector<std::vector<double>>> forces_of(
-    const std::vector<HysteresisRecord>& records, const model::StrutTestParameters<double>& strut,
+    const LoopDiagnosisData& data, const model::StrutTestParameters<double>& strut,
     const simulate::StrutTestSolverOptions& solver) {
   std::vector<std::vector<double>> forces;
-  for (const auto& r : records) {
-    auto force =
-        simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut, solver);
+  for (std::size_t i = 0; i < data.held_out.size(); ++i) {
+    const HysteresisRecord& r = data.held_out[i];
+    const bool lead = i < data.held_out_lead_in.size() && !data.held_out_lead_in[i].time_s.empty();
+    const HysteresisRecord run = lead ? joined(data.held_out_lead_in[i], r) : r;
+    auto force = simulate::strut_test_force<double>(run.time_s, run.displacement_m, strut, strut,
+                                                    solver, run.command);
     if (!force) return std::nullopt;
+    force->erase(force->begin(),
+                 force->begin() + static_cast<std::ptrdiff_t>(run.time_s.size() - r.time_s.size()));
     forces.push_back(std::move(*force));
   }
   return forces;
 }
 
+// Every fit starts from the model it is given and from the same model with the levels read off
+// the training records (strut_start.h) for its free parameters; the better fit is kept.
 ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::string>& free,
                         const ParameterBounds& bounds, const LoopDiagnosisData& data,
+                        const std::map<std::string, double>& estimate,
                         const LoopDiagnosisOptions& options) {
   ScoredFit s;
   HysteresisFitOptions fit_options;
@@ -51,7 +85,8 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   fit_options.solver = options.solver;
   HysteresisFitResult fit;
   try {
-    fit = fit_hysteresis(data.training, start.strut, fit_options);
+    fit = fit_hysteresis_from_starts(
+        data.training, {start.strut, with_estimates(start.strut, estimate, free)}, fit_options);
   } catch (const RunError& e) {
     s.failure = e.what();
     return s;
@@ -65,8 +100,9 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   for (const auto& p : fit.parameters) s.values.push_back({p.name, p.value, p.standard_error});
   s.training_cost = fit.final_cost;
   s.iterations = fit.iterations;
+  s.unidentifiable = fit.unidentifiable;
   for (const auto& r : data.training) s.training_residuals += r.force_N.size();
-  const auto forces = forces_of(data.held_out, s.model.strut, options.solver);
+  const auto forces = forces_of(data, s.model.strut, options.solver);
   if (!forces) {
     s.failure = "the fitted model cannot be solved on the held-out records";
     return s;
@@ -104,6 +140,7 @@ LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records) {
     const std::size_t half = r.time_s.size() / 2;
     data.training.push_back(slice(r, 0, half, "first half"));
     data.held_out.push_back(slice(r, half, r.time_s.size(), "second half"));
+    data.held_out_lead_in.push_back(data.training.front());
     return data;
   }
   for (std::size_t i = 0; i < records.size(); ++i) {
@@ -124,14 +161,23 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   const std::vector<std::string> free =
       options.baseline_free.empty() ? default_free(baseline.strut) : options.baseline_free;
   for (const auto& name : free) strut_parameter_index(name);
+  const std::map<std::string, double> estimate = estimate_strut_start(data.training);
   const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& names,
-                              const ParameterBounds& bounds,
-                              bool) { return fit_and_score(start, names, bounds, data, options); };
+                              const ParameterBounds& bounds, FitPurpose purpose) {
+    if (purpose != FitPurpose::kProbe) {
+      return fit_and_score(start, names, bounds, data, estimate, options);
+    }
+    LoopDiagnosisOptions probe = options;
+    probe.max_iterations = 0;
+    return fit_and_score(start, names, bounds, data, {}, probe);
+  };
   SelectionOptions selection_options = options.selection;
   selection_options.refine = false;  // the screening fit is the reported one
   selection_options.gap_unit = "% NRMSE";
   DiagnosisModel start = baseline;
   start.kind = DataKind::kStrutLoops;
+  start.has_command = std::all_of(data.training.begin(), data.training.end(),
+                                  [](const HysteresisRecord& r) { return !r.command.empty(); });
   const Selection selection =
       select_effects(start, free, {}, effects_to_try(options.effects), fit, selection_options, say);
 
@@ -151,7 +197,7 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
       unexplained.push_back(describe(region));
     }
   }
-  result.verdict = verdict_of(result.named, unexplained);
+  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable);
   return result;
 }
 

@@ -18,11 +18,15 @@ namespace ridefit::fitting::diagnose {
 struct LoopDiagnosisData {
   std::vector<HysteresisRecord> training;
   std::vector<HysteresisRecord> held_out;
+  // Per held-out record, the samples that ran before it (empty when it starts a test): the
+  // model is run through them first and judged from the held-out record's first sample on, so a
+  // half cut from mid-stroke is not judged on the model's start from rest.
+  std::vector<HysteresisRecord> held_out_lead_in;
 };
 
-// One record: its first half is fitted and its second half judges (the second half's
-// simulation starts at rest at its own first sample, as the first one does). Several: they
-// alternate, the 1st, 3rd, … are fitted and the 2nd, 4th, … judge.
+// One record: its first half is fitted and its second half judges (the first half is the
+// second's lead-in). Several: they alternate, the 1st, 3rd, … are fitted and the 2nd, 4th, …
+// judge, each simulated from rest at its own first sample.
 LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records);
 
 struct LoopDiagnosisOptions {

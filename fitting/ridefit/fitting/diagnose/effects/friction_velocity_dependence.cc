@@ -15,6 +15,10 @@ class FrictionVelocityDependence : public Effect {
            "falls to the Coulomb level as the rod speeds up, so the loop overshoots after each "
            "reversal";
   }
+  std::string_view identifiable_from() const override {
+    return "records with sliding velocities around v_s (from about 0.1 to 10 v_s): a triangle at "
+           "one speed shows one friction level";
+  }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
     if (baseline.kind != DataKind::kStrutLoops) {
       return "for strut rig loops: on the road the rod rarely dwells at the low velocities where "

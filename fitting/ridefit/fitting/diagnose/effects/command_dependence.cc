@@ -1,0 +1,52 @@
+// command_dependence: a controlled (semi-active) damper whose damping and friction level follow
+// the command (coil current or valve voltage) after a lag (model/strut_test.h).
+#include <memory>
+
+#include "ridefit/fitting/diagnose/effect.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+class CommandDependence : public Effect {
+ public:
+  std::string_view id() const override { return "command_dependence"; }
+  std::string_view description() const override {
+    return "a controlled damper: damping and friction rise with the command (coil current or "
+           "valve voltage) after the fluid's response time, c(ū) = c + c_b·ū, Fc(ū) = Fc + "
+           "Fc_b·ū, ū' = (u − ū)/τ";
+  }
+  std::string not_applicable(const DiagnosisModel& baseline) const override {
+    if (baseline.kind != DataKind::kStrutLoops) {
+      return "for rig records with a command column: the road models have no command input yet";
+    }
+    if (!baseline.has_command) {
+      return "the records have no command column (current[A] or voltage[V])";
+    }
+    if (baseline.strut.commanded()) return "the baseline already follows the command";
+    return "";
+  }
+  EffectChange change(const DiagnosisModel& baseline) const override {
+    // Slopes start at a small share of the passive levels per unit command; friction needs a
+    // Dahl element, which the change adds when the baseline has none (σ0 from the baseline or
+    // far above the top mount).
+    const auto& s = baseline.strut;
+    const double sigma0 = s.dahl_sigma0_N_per_m > 1e3 ? s.dahl_sigma0_N_per_m : 5e6;
+    EffectChange change{{{"damping_per_command_Ns_per_m", 0.3 * s.damping_Ns_per_m},
+                         {"coulomb_force_per_command_N", 20.0},
+                         {"command_lag_s", 0.01},
+                         {"dahl_sigma0_N_per_m", sigma0},
+                         {"dahl_exponent", s.coulomb_force_N > 0.0 ? s.dahl_exponent : 1.0}},
+                        {},
+                        {{"damping_per_command_Ns_per_m", -1e5, 1e6},
+                         {"coulomb_force_per_command_N", -1e4, 1e4},
+                         {"command_lag_s", 1e-4, 0.5}},
+                        {{{"command_lag_s", 0.002}}, {{"command_lag_s", 0.05}}}};
+    return change;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Effect> make_command_dependence() { return std::make_unique<CommandDependence>(); }
+
+}  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,142 @@
+#include "ridefit/fitting/strut_start.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/io/input_error.h"
+
+namespace ridefit::fitting {
+
+std::map<std::string, double> estimate_strut_start(const std::vector<HysteresisRecord>& records) {
+  const bool commanded =
+      !records.empty() && std::all_of(records.begin(), records.end(),
+                                      [](const HysteresisRecord& r) { return !r.command.empty(); });
+  struct Row {
+    double x, v, u, f;
+  };
+  std::vector<Row> rows;
+  for (const auto& r : records) {
+    const std::size_t n = r.time_s.size();
+    if (n < 3) continue;
+    std::vector<Row> own;
+    double v_squares = 0.0;
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      const double v =
+          (r.displacement_m[k + 1] - r.displacement_m[k - 1]) / (r.time_s[k + 1] - r.time_s[k - 1]);
+      own.push_back({r.displacement_m[k], v, commanded ? r.command[k] : 0.0, r.force_N[k]});
+      v_squares += v * v;
+    }
+    const double v_rms = std::sqrt(v_squares / static_cast<double>(own.size()));
+    for (const auto& row : own) {
+      if (std::abs(row.v) > 0.2 * v_rms) rows.push_back(row);
+    }
+  }
+  std::map<std::string, double> estimate;
+  if (rows.size() < 10) return estimate;
+  // Is |v| nearly constant (a triangle)? Then the slope cannot be told from the level.
+  double mean_speed = 0.0, speed_squares = 0.0;
+  for (const auto& row : rows) mean_speed += std::abs(row.v) / static_cast<double>(rows.size());
+  for (const auto& row : rows) {
+    speed_squares += (std::abs(row.v) - mean_speed) * (std::abs(row.v) - mean_speed);
+  }
+  const bool slope_seen =
+      std::sqrt(speed_squares / static_cast<double>(rows.size())) > 0.2 * mean_speed;
+  // Columns: 1, x, sgn v, [v], [u·sgn v, [u·v]].
+  std::vector<std::string> names = {"force_offset_N", "gas_stiffness_N_per_m", "coulomb_force_N"};
+  if (slope_seen) names.push_back("damping_Ns_per_m");
+  if (commanded) {
+    names.push_back("coulomb_force_per_command_N");
+    if (slope_seen) names.push_back("damping_per_command_Ns_per_m");
+  }
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(rows.size()),
+                    static_cast<Eigen::Index>(names.size()));
+  Eigen::VectorXd b(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    const double sign = row.v < 0.0 ? -1.0 : 1.0;
+    const auto r = static_cast<Eigen::Index>(i);
+    Eigen::Index c = 0;
+    a(r, c++) = 1.0;
+    a(r, c++) = row.x;
+    a(r, c++) = sign;
+    if (slope_seen) a(r, c++) = row.v;
+    if (commanded) {
+      a(r, c++) = row.u * sign;
+      if (slope_seen) a(r, c++) = row.u * row.v;
+    }
+    b(r) = row.f;
+  }
+  // Columns scaled to unit norm so the rank decision is about shape, not units.
+  const Eigen::VectorXd norms = a.colwise().norm();
+  for (Eigen::Index c = 0; c < a.cols(); ++c) {
+    if (norms(c) > 0.0) a.col(c) /= norms(c);
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
+  qr.setThreshold(1e-8);
+  if (qr.rank() < a.cols()) return estimate;
+  const Eigen::VectorXd solution = qr.solve(b);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto c = static_cast<Eigen::Index>(i);
+    const double value = norms(c) > 0.0 ? solution(c) / norms(c) : 0.0;
+    if (!std::isfinite(value)) continue;
+    if ((names[i] == "coulomb_force_N" || names[i] == "damping_Ns_per_m") && !(value > 0.0)) {
+      continue;
+    }
+    estimate[names[i]] = value;
+  }
+  return estimate;
+}
+
+model::StrutTestParameters<double> with_estimates(model::StrutTestParameters<double> base,
+                                                  const std::map<std::string, double>& estimate,
+                                                  const std::vector<std::string>& free) {
+  for (const auto& name : free) {
+    const auto found = estimate.find(name);
+    if (found == estimate.end()) continue;
+    strut_parameter(base, strut_parameter_index(name)) = found->second;
+  }
+  return base;
+}
+
+HysteresisFitResult fit_hysteresis_from_starts(
+    const std::vector<HysteresisRecord>& records,
+    const std::vector<model::StrutTestParameters<double>>& starts,
+    const HysteresisFitOptions& options, const std::vector<std::string>& start_labels,
+    std::string* chosen) {
+  std::vector<std::size_t> free;
+  for (const auto& name : options.free) free.push_back(strut_parameter_index(name));
+  std::vector<std::vector<double>> seen;
+  std::optional<HysteresisFitResult> best;
+  std::string failure;
+  for (std::size_t s = 0; s < starts.size(); ++s) {
+    model::StrutTestParameters<double> start = starts[s];
+    std::vector<double> key;
+    for (std::size_t index : free) {
+      double lo = kStrutParameters[index].lower, hi = kStrutParameters[index].upper;
+      const auto bound = options.bounds.find(std::string(kStrutParameters[index].name));
+      if (bound != options.bounds.end()) std::tie(lo, hi) = bound->second;
+      double& value = strut_parameter(start, index);
+      // The first start is the caller's own and keeps its checks (an out-of-bounds start is an
+      // InputError there); the others are clamped inside.
+      if (s > 0) value = std::clamp(value, lo, hi);
+      key.push_back(value);
+    }
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+    seen.push_back(key);
+    try {
+      HysteresisFitResult fit = fit_hysteresis(records, start, options);
+      if (!best || fit.final_cost < best->final_cost) {
+        best = std::move(fit);
+        if (chosen != nullptr) *chosen = s < start_labels.size() ? start_labels[s] : "";
+      }
+    } catch (const RunError& e) {
+      failure = e.what();
+    }
+  }
+  if (!best) throw RunError(failure.empty() ? "fit: no start to fit from" : failure);
+  return *best;
+}
+
+}  // namespace ridefit::fitting
