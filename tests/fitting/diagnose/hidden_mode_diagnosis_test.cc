@@ -2,6 +2,7 @@
 // 30 kg engine on a 12 Hz mount, a secondary body mode no effect of the library can make. The
 // record comes from a 3-mass model integrated here by classic RK4 at 20 μs (not ridefit's
 // ESDIRK nor its model code); the diagnosis must say that a disagreement remains unexplained.
+// A wheel mass the model gets wrong shows, end to end, as a peak shift.
 // Controls: records of the baseline itself (CVODE), with 0.5 % and with 5 % sensor noise, get no
 // named effect and no unexplained region. 60 s records at 200 Hz on a class A road at 50 km/h,
 // split into halves (fitted, judged).
@@ -204,6 +205,31 @@ TEST(HiddenModeDiagnosis, AnEngineOnItsMountIsAnUnexplainedDisagreement) {
     EXPECT_TRUE(region.above_band)
         << region.channel << " " << region.low_Hz << "–" << region.high_Hz;
   }
+}
+
+// The peak comparison end to end: the record's wheel is 32 kg where the model has 46.8 kg (a
+// parameter the diagnosis does not free, and no effect of the library): the measured wheel mode
+// sits ~2.4 Hz above the fitted model's, beyond the ~1.7 Hz the two estimates of that broad mode
+// resolve, and the shift is among the unexplained disagreements. (CVODE record, 0.5 % noise.)
+TEST(HiddenModeDiagnosis, AWheelMassTheModelGetsWrongShowsAsAPeakShift) {
+  const auto start = std::chrono::steady_clock::now();
+  auto p = testing::passat_corner().parameters;
+  p.unsprung_mass_kg = 32.0;
+  const model::QuarterCar truth(model::DamperState::kStickSlip, p);
+  const PsdMeasurement record =
+      testing::hidden_effect_record(truth, road::Iso8608Class::kA, 5, kDuration_s, kRate_Hz, 0.005);
+  const DiagnosisResult r = diagnose({baseline()}, split_record(record), options());
+  print_map("wheel mass", r);
+  std::printf("wheel mass diagnosis: %.1f s\n", seconds_since(start));
+  EXPECT_TRUE(r.named.empty()) << r.verdict;
+  const DisagreementRegion* shift = nullptr;
+  for (const auto& region : r.unexplained) {
+    if (region.evidence == RegionEvidence::kPeakShift) shift = &region;
+  }
+  ASSERT_NE(shift, nullptr) << r.verdict;
+  EXPECT_EQ(shift->channel, "wheel_acc");
+  EXPECT_GT(shift->measured_peak_Hz - shift->simulated_peak_Hz, shift->resolution_Hz);
+  EXPECT_GT(shift->measured_peak_Hz - shift->simulated_peak_Hz, 1.5);
 }
 
 void expect_quiet(double noise, unsigned seed) {
