@@ -53,6 +53,10 @@ TEST(DiagnoseCli, QuickRunWritesReportModelAndJson) {
   ASSERT_EQ(j["rounds"].size(), 1u);
   EXPECT_EQ(j["rounds"][0]["effects"].size(), 2u);
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "diagnosis" / "report.md"));
+  // The report states the sensor-noise floors it compared with (estimated: none given).
+  const std::string report = testing::text_of(dir.path() / "diagnosis" / "report.md");
+  EXPECT_NE(report.find("Sensor-noise floors"), std::string::npos) << report;
+  EXPECT_NE(report.find("(estimated), wheel_acc"), std::string::npos) << report;
   // The output model loads and equals the input where nothing was added.
   const auto written = io::load_quarter_car(dir.path() / "diagnosis" / "model.yaml");
   const auto input = io::load_quarter_car(model);

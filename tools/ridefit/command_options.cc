@@ -44,6 +44,30 @@ CLI::Option* add_tolerance_option(CLI::App& command, const std::string& name, do
       ->capture_default_str();
 }
 
+CLI::Option* add_noise_psd_option(CLI::App& command, const std::string& channel, double& value) {
+  return command
+      .add_option(
+          "--" + channel + "-noise-psd", value,
+          "White sensor-noise floor of " + channel +
+              "_acc [(m/s^2)^2/Hz, one-sided PSD level], added to the simulated PSD "
+              "before it is compared with the measured one; 0 = none; default: estimated "
+              "from the record (a power law plus a constant fitted to its PSD above the band)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || !(v >= 0.0)) {
+              return fmt::format("expected a noise PSD level >= 0 in (m/s^2)^2/Hz, got '{}'", text);
+            }
+            return "";
+          },
+          "(m/s^2)^2/Hz >= 0"));
+}
+
+std::optional<double> noise_psd_of(double value) {
+  return std::isnan(value) ? std::nullopt : std::optional<double>(value);
+}
+
 ProgressReporter::ProgressReporter(std::string what, double end_time_s)
     : what_(std::move(what)),
       end_time_s_(end_time_s),

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,13 @@ CLI::Validator positive_number(const std::string& unit);
 // integrator accepts, with `what` saying whose tolerance it is; the default is shown.
 CLI::Option* add_tolerance_option(CLI::App& command, const std::string& name, double& value,
                                   const std::string& what);
+
+// The white sensor-noise floor of one acceleration channel (`channel`: "body" or "wheel"):
+// --body-noise-psd / --wheel-noise-psd, a one-sided PSD level in (m/s^2)^2/Hz, >= 0 (0: no
+// floor); not given, it is estimated from the record (signal/noise_floor.h). `value` stays NaN
+// when the flag is absent; noise_psd_of turns it into the fit option.
+CLI::Option* add_noise_psd_option(CLI::App& command, const std::string& channel, double& value);
+std::optional<double> noise_psd_of(double value);
 
 // Reports progress on stderr for runs that take longer than a second: nothing for short
 // runs, then a line per 10 % of simulated time (rewritten in place on a terminal).

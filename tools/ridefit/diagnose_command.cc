@@ -196,12 +196,17 @@ void write_regions(std::ostream& out, const std::vector<dx::DisagreementRegion>&
     out << "No significant disagreement.\n\n";
     return;
   }
-  out << "| channel | band [Hz] | size [dB] | measured peak [Hz] | simulated peak [Hz] | where |\n"
-         "| --- | --- | --- | --- | --- | --- |\n";
+  out << "| channel | band [Hz] | size [dB] | measured peak [Hz] | simulated peak [Hz] | where | "
+         "evidence |\n| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const auto& r : regions) {
-    out << fmt::format("| {} | {:.2f}–{:.2f} | {:+.2f} | {:.2f} | {:.2f} | {} |\n", r.channel,
+    const std::string evidence =
+        r.evidence == dx::RegionEvidence::kPeakShift
+            ? fmt::format("peak shift (resolves {:.2f} Hz)", r.resolution_Hz)
+        : r.evidence == dx::RegionEvidence::kPooledBand ? std::string("pooled bins")
+                                                        : std::string("single bins");
+    out << fmt::format("| {} | {:.2f}–{:.2f} | {:+.2f} | {:.2f} | {:.2f} | {} | {} |\n", r.channel,
                        r.low_Hz, r.high_Hz, r.size_dB, r.measured_peak_Hz, r.simulated_peak_Hz,
-                       r.above_band ? "above the road's band" : "in band");
+                       r.above_band ? "above the road's band" : "in band", evidence);
   }
   out << "\n";
 }
@@ -226,6 +231,18 @@ void write_report(std::ostream& out, const DiagnoseFlags& flags, const dx::Diagn
       data.training.source, data.training.time_s.back() - data.training.time_s.front(),
       data.held_out.source, data.held_out.time_s.back() - data.held_out.time_s.front(),
       flags.band_Hz[0], flags.band_Hz[1], flags.segment_s);
+  fitting::PsdFitOptions floors_options;
+  floors_options.band_high_Hz = flags.band_Hz[1];
+  floors_options.body_noise_psd = noise_psd_of(flags.body_noise_psd);
+  floors_options.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
+  const fitting::NoiseFloors floors = fitting::noise_floors(data.held_out, floors_options);
+  out << fmt::format(
+      "Sensor-noise floors added to the simulated PSDs before every comparison (held-out record): "
+      "body_acc {:.3g} ({}), wheel_acc {:.3g} ({}) (m/s^2)^2/Hz. Regions: single bins outside "
+      "their F interval, pooled windows of bins whose mean ratio is outside its interval, or a "
+      "peak further from the measured one than the two estimates resolve.\n\n",
+      floors.body_psd, std::isnan(flags.body_noise_psd) ? "estimated" : "given", floors.wheel_psd,
+      std::isnan(flags.wheel_noise_psd) ? "estimated" : "given");
   out << "**Verdict: " << r.verdict << ".**\n\n";
   out << fmt::format("Gap before {:.2f} dB, after {:.2f} dB ({:.0f} % smaller).\n\n", r.gap_before,
                      r.gap_after,
@@ -258,7 +275,10 @@ nlohmann::json regions_json(const std::vector<dx::DisagreementRegion>& regions) 
                  {"size_dB", r.size_dB},
                  {"measured_peak_Hz", r.measured_peak_Hz},
                  {"simulated_peak_Hz", r.simulated_peak_Hz},
-                 {"above_band", r.above_band}});
+                 {"above_band", r.above_band},
+                 {"evidence", r.evidence == dx::RegionEvidence::kPeakShift    ? "peak_shift"
+                              : r.evidence == dx::RegionEvidence::kPooledBand ? "pooled_band"
+                                                                              : "bins"}});
   }
   return j;
 }
@@ -268,7 +288,9 @@ nlohmann::json peaks_json(const dx::DisagreementMap& map) {
   for (const auto& c : map.channels) {
     j[c.channel] = {{"gap_dB", c.gap_dB},
                     {"measured_peak_Hz", c.measured_peak_Hz},
-                    {"simulated_peak_Hz", c.simulated_peak_Hz}};
+                    {"simulated_peak_Hz", c.simulated_peak_Hz},
+                    {"peak_shift_significant", c.peak.significant},
+                    {"peak_shift_threshold_Hz", c.peak.threshold_Hz}};
   }
   return j;
 }
@@ -355,6 +377,8 @@ void run(const DiagnoseFlags& flags) {
   options.screening_relative_tolerance = flags.screening_rtol;
   options.final_relative_tolerance = flags.final_rtol;
   options.map.segment_s = flags.segment_s;
+  options.fit.body_noise_psd = noise_psd_of(flags.body_noise_psd);
+  options.fit.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
   options.selection.threads = flags.threads;
 
   check_output_is_not_an_input(flags);
@@ -393,6 +417,9 @@ void run(const DiagnoseFlags& flags) {
                       flags.band_Hz[1], m->source, 0.5 * m->sample_rate_Hz));
     }
   }
+  // The noise floors (given, or estimated above the band: InputError when the band leaves no room
+  // below the Nyquist frequency), before any output.
+  for (const auto* m : {&data.training, &data.held_out}) fitting::noise_floors(*m, options.fit);
   const bool figure = io::gnuplot_available();
   io::prepare_output_directory(dir, "-o");
 
@@ -488,6 +515,8 @@ void register_diagnose(CLI::App& app) {
   add_tolerance_option(*command, "--rtol", flags->final_rtol,
                        "Vehicle spectra: the integrator's relative tolerance of the reported "
                        "fits (baseline and named effects)");
+  add_noise_psd_option(*command, "body", flags->body_noise_psd);
+  add_noise_psd_option(*command, "wheel", flags->wheel_noise_psd);
   command->add_option("--threads", flags->threads, "Effects fitted at once (0 = every core)")
       ->capture_default_str();
   command->add_flag("--json", flags->json,

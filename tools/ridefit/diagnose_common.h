@@ -3,6 +3,7 @@
 // What `ridefit diagnose` shares between its two kinds of data: the flags, and the parts of the
 // report and of the JSON that do not depend on the kind (diagnose_command.cc).
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -27,6 +28,8 @@ struct DiagnoseFlags {
   double segment_s = 4.0;
   double screening_rtol = 1e-3;
   double final_rtol = 1e-4;
+  double body_noise_psd = std::nan("");  // not given: estimated from each record
+  double wheel_noise_psd = std::nan("");
   unsigned threads = 0;
   bool json = false;
   bool quiet = false;

@@ -300,6 +300,8 @@ struct FitPsdFlags {
   int max_iterations = 50;
   std::string loss = "none";
   double relative_tolerance = 1e-4;
+  double body_noise_psd = std::nan("");  // not given: estimated
+  double wheel_noise_psd = std::nan("");
   std::string output_file;
   std::string plot_file;
   double max_nrmse_percent = 10.0;
@@ -327,6 +329,8 @@ void run_psd(const FitPsdFlags& flags) {
   options.max_iterations = flags.max_iterations;
   options.loss = flags.loss;
   options.relative_tolerance = flags.relative_tolerance;
+  options.body_noise_psd = noise_psd_of(flags.body_noise_psd);
+  options.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
   const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
   const fitting::FitAdequacy adequacy =
       fitting::assess_psd_fit(fit, model_file.parameters, options, flags.max_nrmse_percent);
@@ -362,17 +366,20 @@ void run_psd(const FitPsdFlags& flags) {
     io::draw_figure(figure, flags.plot_file);
   }
   if (flags.json) {
-    nlohmann::json j = {{"converged", fit.converged},
-                        {"termination", fit.termination},
-                        {"iterations", fit.iterations},
-                        {"final_cost", fit.final_cost},
-                        {"unidentifiable", fit.unidentifiable},
-                        {"identifiability_note", fit.identifiability_note},
-                        {"nrmse_percent", adequacy.nrmse_percent},
-                        {"explains_data", adequacy.explains_data},
-                        {"adequacy_note", adequacy.note},
-                        {"on_bounds", adequacy.on_bounds},
-                        {"parameters", nlohmann::json::array()}};
+    nlohmann::json j = {
+        {"converged", fit.converged},
+        {"termination", fit.termination},
+        {"iterations", fit.iterations},
+        {"final_cost", fit.final_cost},
+        {"unidentifiable", fit.unidentifiable},
+        {"identifiability_note", fit.identifiability_note},
+        {"nrmse_percent", adequacy.nrmse_percent},
+        {"explains_data", adequacy.explains_data},
+        {"adequacy_note", adequacy.note},
+        {"on_bounds", adequacy.on_bounds},
+        {"noise_psd",
+         {{"body_acc", fit.noise_floors.body_psd}, {"wheel_acc", fit.noise_floors.wheel_psd}}},
+        {"parameters", nlohmann::json::array()}};
     j["correlation"] = correlation_json(fit.correlation);
     for (std::size_t i = 0; i < fit.names.size(); ++i) {
       j["parameters"].push_back(
@@ -512,6 +519,8 @@ void register_fit(CLI::App& app) {
       ->capture_default_str();
   add_tolerance_option(*psd_command, "--rtol", psd->relative_tolerance,
                        "Relative tolerance of the quarter car's adaptive ESDIRK integration");
+  add_noise_psd_option(*psd_command, "body", psd->body_noise_psd);
+  add_noise_psd_option(*psd_command, "wheel", psd->wheel_noise_psd);
   psd_command->add_option("-o,--output", psd->output_file,
                           "Fitted model (YAML, the input's schema)");
   psd_command->add_option("--plot", psd->plot_file, "Measured and fitted PSDs (.png or .svg)");

@@ -5,10 +5,12 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <boost/math/special_functions/digamma.hpp>
 #include <cmath>
 #include <complex>
 #include <memory>
 #include <set>
+#include <tuple>
 #include <unsupported/Eigen/FFT>
 
 #include "ridefit/fitting/integration_resolution.h"
@@ -17,7 +19,9 @@
 #include "ridefit/model/quarter_car_parameter_names.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
+#include "ridefit/signal/equivalent_dof.h"
 #include "ridefit/signal/hann_window.h"
+#include "ridefit/signal/noise_floor.h"
 #include "ridefit/signal/uniform_sample_rate.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"
 
@@ -86,6 +90,25 @@ struct WelchBins {
   }
 };
 
+// One bin's residual against the measured log-PSD, with the sensor-noise floor N: the model
+// as the sensor shows it, P + N, and the expected log of that noisy estimate. The measured
+// estimate's noise part is its own χ² scatter, which the simulation (driven by the same road,
+// without the noise) does not share: with q = N/(P + N) the noise's share of the bin, its
+// log-estimate lies below ln(P + N) by about b·q·(2 − q) (a second-order expansion of
+// E[ln X̂] over Var X̂ ∝ N² + 2·P·N; b = ln(ν/2) − ψ(ν/2) ≈ 1/ν is the whole bias of a pure
+// χ²_ν/ν bin). So r = ln(P + N) − b·q·(2 − q) − ln P_meas, and dr/dP = (1 + 2·b·q·(1 − q))/(P + N)
+// exactly. N = 0 is the plain ln P − ln P_meas.
+struct BinResidual {
+  double value = 0.0;
+  double slope = 0.0;  // dr/dP
+};
+BinResidual bin_residual(double psd, double noise_psd, double log_bias, double measured_log) {
+  const double shown = psd + noise_psd;
+  const double q = noise_psd / shown;
+  return {std::log(shown) - log_bias * q * (2.0 - q) - measured_log,
+          (1.0 + 2.0 * log_bias * q * (1.0 - q)) / shown};
+}
+
 // The Jet's size is the number of free parameters rounded up to 2, 4 or 6: the simulation's cost
 // grows with it, and most fits free two to four.
 template <int N>
@@ -95,7 +118,8 @@ class PsdCost : public ceres::CostFunction {
  public:
   PsdCost(const PsdMeasurement& m, const model::QuarterCar& car, std::vector<std::size_t> fields,
           std::vector<double> units, WelchBins welch, std::vector<double> measured_body_log,
-          std::vector<double> measured_wheel_log, simulate::AccelerationSolverOptions solver)
+          std::vector<double> measured_wheel_log, NoiseFloors noise, double log_bias,
+          simulate::AccelerationSolverOptions solver)
       : m_(m),
         car_(car),
         fields_(std::move(fields)),
@@ -103,6 +127,8 @@ class PsdCost : public ceres::CostFunction {
         welch_(std::move(welch)),
         body_log_(std::move(measured_body_log)),
         wheel_log_(std::move(measured_wheel_log)),
+        noise_(noise),
+        log_bias_(log_bias),
         solver_(solver) {
     set_num_residuals(static_cast<int>(body_log_.size() + wheel_log_.size()));
     for (std::size_t i = 0; i < fields_.size(); ++i) mutable_parameter_block_sizes()->push_back(1);
@@ -124,7 +150,8 @@ class PsdCost : public ceres::CostFunction {
         simulate::quarter_car_accelerations<Jet>(car, jets, *m_.road, m_.time_s, solver_);
     if (!series) return false;
     std::size_t row = 0;
-    auto channel = [&](const std::vector<Jet>& acc, const std::vector<double>& measured_log) {
+    auto channel = [&](const std::vector<Jet>& acc, const std::vector<double>& measured_log,
+                       double noise_psd) {
       if (measured_log.empty()) return true;
       std::vector<double> x(acc.size());
       std::vector<std::vector<double>> tangents(fields_.size(), std::vector<double>(acc.size()));
@@ -138,17 +165,20 @@ class PsdCost : public ceres::CostFunction {
       std::vector<std::vector<double>> dpsd;
       welch_.evaluate(x, tangents, psd, dpsd);
       for (std::size_t b = 0; b < psd.size(); ++b, ++row) {
-        if (!(psd[b] > 0.0)) return false;
-        residuals[row] = std::log(psd[b]) - measured_log[b];
+        // The model as the sensor would show it: its PSD plus the noise floor.
+        if (!(psd[b] + noise_psd > 0.0)) return false;
+        const BinResidual r = bin_residual(psd[b], noise_psd, log_bias_, measured_log[b]);
+        residuals[row] = r.value;
         if (jacobians) {
           for (std::size_t j = 0; j < fields_.size(); ++j) {
-            if (jacobians[j]) jacobians[j][row] = dpsd[j][b] / psd[b];
+            if (jacobians[j]) jacobians[j][row] = dpsd[j][b] * r.slope;
           }
         }
       }
       return true;
     };
-    return channel(series->body, body_log_) && channel(series->wheel, wheel_log_);
+    return channel(series->body, body_log_, noise_.body_psd) &&
+           channel(series->wheel, wheel_log_, noise_.wheel_psd);
   }
 
  private:
@@ -159,15 +189,16 @@ class PsdCost : public ceres::CostFunction {
         simulate::quarter_car_accelerations<double>(car, p, *m_.road, m_.time_s, solver_);
     if (!series) return false;
     std::size_t row = 0;
-    for (const auto& [acc, measured_log] :
-         {std::pair{&series->body, &body_log_}, std::pair{&series->wheel, &wheel_log_}}) {
+    for (const auto& [acc, measured_log, noise_psd] :
+         {std::tuple{&series->body, &body_log_, noise_.body_psd},
+          std::tuple{&series->wheel, &wheel_log_, noise_.wheel_psd}}) {
       if (measured_log->empty()) continue;
       std::vector<double> psd;
       std::vector<std::vector<double>> none;
       welch_.evaluate(*acc, {}, psd, none);
       for (std::size_t b = 0; b < psd.size(); ++b, ++row) {
-        if (!(psd[b] > 0.0)) return false;
-        residuals[row] = std::log(psd[b]) - (*measured_log)[b];
+        if (!(psd[b] + noise_psd > 0.0)) return false;
+        residuals[row] = bin_residual(psd[b], noise_psd, log_bias_, (*measured_log)[b]).value;
       }
     }
     return true;
@@ -179,15 +210,32 @@ class PsdCost : public ceres::CostFunction {
   std::vector<double> units_;
   WelchBins welch_;
   std::vector<double> body_log_, wheel_log_;
+  NoiseFloors noise_;
+  double log_bias_;
   simulate::AccelerationSolverOptions solver_;
 };
 
-std::vector<double> log_psd(const WelchBins& welch, const std::vector<double>& x) {
+// ln of Welch's PSD at the bins, with `noise_psd` added first (the simulated side's floor).
+std::vector<double> log_psd(const WelchBins& welch, const std::vector<double>& x,
+                            double noise_psd = 0.0) {
   std::vector<double> psd;
   std::vector<std::vector<double>> none;
   welch.evaluate(x, {}, psd, none);
-  for (double& p : psd) p = std::log(std::max(p, 1e-300));
+  for (double& p : psd) p = std::log(std::max(p + noise_psd, 1e-300));
   return psd;
+}
+
+double floor_of(const std::optional<double>& given, const std::vector<double>& measured,
+                double sample_rate_Hz, double band_high_Hz, const char* flag) {
+  if (measured.empty()) return 0.0;
+  if (given) {
+    if (!(*given >= 0.0) || !std::isfinite(*given)) {
+      throw InputError(
+          fmt::format("{} {}: expected a noise PSD level >= 0 in (m/s^2)^2/Hz", flag, *given));
+    }
+    return *given;
+  }
+  return signal::estimate_white_noise_floor(measured, sample_rate_Hz, band_high_Hz);
 }
 
 }  // namespace
@@ -243,6 +291,8 @@ struct PsdSetup {
   std::vector<double> units;
   WelchBins welch;
   std::vector<double> body_log, wheel_log;
+  NoiseFloors noise;
+  double log_bias = 0.0;  // b = ln(ν/2) − ψ(ν/2) of the bins (bin_residual)
 };
 
 PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
@@ -292,7 +342,10 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
     units.push_back(v);
   }
 
-  return {fields, bounds, units, welch, body_log, wheel_log};
+  const std::size_t segments = (m.time_s.size() - welch.length) / (welch.length / 2) + 1;
+  const double nu = signal::welch_degrees_of_freedom(welch.window, welch.length / 2, segments);
+  const double log_bias = std::log(0.5 * nu) - boost::math::digamma(0.5 * nu);
+  return {fields, bounds, units, welch, body_log, wheel_log, noise_floors(m, options), log_bias};
 }
 
 simulate::AccelerationSolverOptions solver_options(const PsdFitOptions& options) {
@@ -307,15 +360,25 @@ ceres::CostFunction* new_psd_cost(const PsdMeasurement& m, const model::QuarterC
                                   const simulate::AccelerationSolverOptions& solver) {
   const std::size_t n = s.fields.size();
   if (n <= 2) {
-    return new PsdCost<2>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, solver);
+    return new PsdCost<2>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
+                          s.log_bias, solver);
   }
   if (n <= 4) {
-    return new PsdCost<4>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, solver);
+    return new PsdCost<4>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
+                          s.log_bias, solver);
   }
-  return new PsdCost<kMaxFree>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, solver);
+  return new PsdCost<kMaxFree>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
+                               s.log_bias, solver);
 }
 
 }  // namespace
+
+NoiseFloors noise_floors(const PsdMeasurement& m, const PsdFitOptions& options) {
+  return {floor_of(options.body_noise_psd, m.body_acc_m_per_s2, m.sample_rate_Hz,
+                   options.band_high_Hz, "--body-noise-psd"),
+          floor_of(options.wheel_noise_psd, m.wheel_acc_m_per_s2, m.sample_rate_Hz,
+                   options.band_high_Hz, "--wheel-noise-psd")};
+}
 
 std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::QuarterCar& car,
                                         const PsdFitOptions& options) {
@@ -324,12 +387,17 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
       car, car.parameters(), *m.road, m.time_s, solver_options(options));
   if (!series) return std::nullopt;
   PsdMismatch mismatch;
-  for (const auto& [acc, measured_log] :
-       {std::pair{&series->body, &setup.body_log}, std::pair{&series->wheel, &setup.wheel_log}}) {
+  for (const auto& [acc, measured_log, noise_psd] :
+       {std::tuple{&series->body, &setup.body_log, setup.noise.body_psd},
+        std::tuple{&series->wheel, &setup.wheel_log, setup.noise.wheel_psd}}) {
     if (measured_log->empty()) continue;
-    const std::vector<double> simulated_log = log_psd(setup.welch, *acc);
-    for (std::size_t b = 0; b < simulated_log.size(); ++b) {
-      const double r = simulated_log[b] - (*measured_log)[b];
+    std::vector<double> psd;
+    std::vector<std::vector<double>> none;
+    setup.welch.evaluate(*acc, {}, psd, none);
+    for (std::size_t b = 0; b < psd.size(); ++b) {
+      const double r =
+          bin_residual(std::max(psd[b], 1e-300), noise_psd, setup.log_bias, (*measured_log)[b])
+              .value;
       mismatch.cost += 0.5 * r * r;
       ++mismatch.residuals;
     }
@@ -348,7 +416,7 @@ ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const mode
 PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
                      const PsdFitOptions& options) {
   const PsdSetup setup = prepare(m, car, options);
-  const auto& [fields, bounds, units, welch, body_log, wheel_log] = setup;
+  const auto& [fields, bounds, units, welch, body_log, wheel_log, noise, log_bias] = setup;
   PsdFitResult best;
   best.final_cost = std::numeric_limits<double>::infinity();
   for (int start_index = 0; start_index < std::max(1, options.starts); ++start_index) {
@@ -500,12 +568,13 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
   };
   if (series && !body_log.empty()) {
     best.measured_body_psd = exp_of(body_log);
-    best.fitted_body_psd = exp_of(log_psd(welch, series->body));
+    best.fitted_body_psd = exp_of(log_psd(welch, series->body, noise.body_psd));
   }
   if (series && !wheel_log.empty()) {
     best.measured_wheel_psd = exp_of(wheel_log);
-    best.fitted_wheel_psd = exp_of(log_psd(welch, series->wheel));
+    best.fitted_wheel_psd = exp_of(log_psd(welch, series->wheel, noise.wheel_psd));
   }
+  best.noise_floors = noise;
   return best;
 }
 

@@ -51,7 +51,23 @@ struct PsdFitOptions {
   int starts = 1;  // multi-start: also start at these many spread points within the bounds
   std::string loss = "none";  // none | huber | cauchy, on the log-PSD residuals
   double loss_scale = 0.5;    // in natural-log units: a factor e^0.5 = 1.65 in PSD
+  // The white sensor-noise floor of each channel, the one-sided PSD level N [(m/s²)²/Hz] the
+  // accelerometer adds: the fit compares ln(P_sim + N) with ln(P_meas), so bins where the noise
+  // dominates the measurement no longer pull the parameters. Empty = estimated from each
+  // measured record (signal/noise_floor.h: the constant of a power law plus a constant fitted
+  // to the measured PSD above the band); 0 = no floor (the plain log-PSD residual).
+  std::optional<double> body_noise_psd;
+  std::optional<double> wheel_noise_psd;
 };
+
+// The noise floors a fit or a comparison on `measurement` uses [(m/s²)²/Hz]: the options' values
+// where given, else estimated from the measured channel above options.band_high_Hz; 0 for a
+// channel the record does not have.
+struct NoiseFloors {
+  double body_psd = 0.0;
+  double wheel_psd = 0.0;
+};
+NoiseFloors noise_floors(const PsdMeasurement& measurement, const PsdFitOptions& options);
 
 struct PsdFitResult {
   std::vector<std::string> names;
@@ -67,20 +83,26 @@ struct PsdFitResult {
   std::vector<double> frequency_Hz;                          // the band's bins
   std::vector<double> measured_body_psd, fitted_body_psd;    // empty without body_acc
   std::vector<double> measured_wheel_psd, fitted_wheel_psd;  // empty without wheel_acc
+  // The fitted PSDs include the noise floors (P_sim + N: what was compared with the
+  // measurement); the floors themselves [(m/s²)²/Hz].
+  NoiseFloors noise_floors;
   model::QuarterCarParameters<double> fitted;
 };
 
 // Fits the free parameters of the stick/slip (or the file's) quarter car so that its simulated
 // body and wheel acceleration PSDs match the measured ones over the band: residuals are the
-// differences of the natural logs of the PSDs bin by bin (Welch with the same settings on both
-// sides, so every bin has the same χ² confidence and the same weight). The simulation runs the
-// measured road through quarter_car_accelerations (adaptive ESDIRK; with Jets, the tangents of
-// its frozen step sequence), and the PSD's derivatives follow from the FFT's linearity
-// (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard
-// errors from the Jacobian at the optimum, scaled by the residual variance.
-// The cost function fit_psd hands to Ceres (log-PSD residuals of the band, one parameter block of
-// size 1 per free parameter in units of its start value, so 1.0 is the model's value), exposed
-// for the gradient check. The caller owns it; `measurement` and `car` must outlive it.
+// differences of the natural logs of the PSDs bin by bin, ln(P_sim + N) − ln(P_meas) with N the
+// channel's sensor-noise floor (noise_floors; d ln(P + N) = dP/(P + N)), less the small expected
+// log-bias of the noise's own χ² scatter in bins it dominates (b·q·(2 − q), q = N/(P + N),
+// b ≈ 1/ν; psd_fit.cc bin_residual) (Welch with the same settings on both sides, so every bin has
+// the same χ² confidence and the same weight). The
+// simulation runs the measured road through quarter_car_accelerations (adaptive ESDIRK; with Jets,
+// the tangents of its frozen step sequence), and the PSD's derivatives follow from the FFT's
+// linearity (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard errors from the
+// Jacobian at the optimum, scaled by the residual variance. The cost function fit_psd hands to
+// Ceres (log-PSD residuals of the band, one parameter block of size 1 per free parameter in units
+// of its start value, so 1.0 is the model's value), exposed for the gradient check. The caller owns
+// it; `measurement` and `car` must outlive it.
 ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
                                    const PsdFitOptions& options);
 

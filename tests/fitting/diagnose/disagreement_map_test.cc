@@ -4,9 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/core.h>
+
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "ridefit/io/input_error.h"
@@ -18,10 +21,11 @@ namespace {
 
 constexpr double kRate_Hz = 200.0;
 
-// White noise through a resonance at f [Hz], ζ = 0.1 (the base-excited oscillator).
-std::vector<double> resonance(const std::vector<double>& input, double f) {
+// White noise through a resonance at f [Hz], damping ratio ζ (the base-excited oscillator).
+std::vector<double> resonance(const std::vector<double>& input, double f, double zeta = 0.1) {
   const double w = 2.0 * std::numbers::pi * f;
-  const signal::AnalogueSection section{{w * w, 0.2 * w, 0.0}, {w * w, 0.2 * w, 1.0}, f};
+  const signal::AnalogueSection section{
+      {w * w, 2.0 * zeta * w, 0.0}, {w * w, 2.0 * zeta * w, 1.0}, f};
   return signal::BiquadCascade::from_analogue(std::vector{section}, kRate_Hz).filter(input);
 }
 
@@ -111,6 +115,100 @@ TEST(DisagreementMap, WhiteResidualPassesLjungBoxColouredFails) {
   for (double& v : growing) v *= 1.0 + 0.5 * std::abs(v) / peak;
   const auto g = map_disagreement({{"acc", measured, growing}}, kRate_Hz).channels.front();
   EXPECT_GT(g.amplitude_dependence, 10.0);
+}
+
+// Two realisations, the simulated one 1.5 dB higher everywhere: per bin that is half the
+// F(ν, ν) interval's half-width (ν ≈ 55), so single bins make no region of it; the pooled
+// windows do, and measure it.
+TEST(DisagreementMap, AConsistentOnePointFiveDecibelsIsFoundByPooledBins) {
+  const auto measured = resonance(noise(20), 10.0);
+  auto simulated = resonance(noise(21), 10.0);
+  for (double& v : simulated) v *= std::pow(10.0, 1.5 / 20.0);
+  DisagreementOptions bins_only;
+  bins_only.pooled_max_width_Hz = 0.0;
+  bins_only.compare_peaks = false;
+  double widest_bins = 0.0;
+  for (const auto& r :
+       map_disagreement({{"acc", measured, simulated}}, kRate_Hz, bins_only).regions) {
+    widest_bins = std::max(widest_bins, r.high_Hz - r.low_Hz);
+  }
+  EXPECT_LT(widest_bins, 3.0);
+  const auto map = map_disagreement({{"acc", measured, simulated}}, kRate_Hz);
+  double covered = 0.0, weighted = 0.0;
+  for (const auto& r : map.regions) {
+    if (r.above_band || r.evidence == RegionEvidence::kPeakShift) continue;
+    EXPECT_GT(r.size_dB, 0.0);
+    covered += r.high_Hz - r.low_Hz;
+    weighted += (r.high_Hz - r.low_Hz) * r.size_dB;
+  }
+  EXPECT_GT(covered, 15.0);  // of the 29.5 Hz band
+  EXPECT_NEAR(weighted / covered, 1.5, 0.5);
+}
+
+// Neither the pooled windows nor the peak comparison raise alarms on two realisations of one
+// process: a sharp (ζ = 0.1) and a broad (ζ = 0.3, a wheel hop's) resonance, 20 pairs each.
+TEST(DisagreementMap, PooledBandsAndPeakShiftsStayQuietOnTwoRealisations) {
+  int alarms = 0;
+  std::string which;
+  for (double zeta : {0.1, 0.3}) {
+    for (unsigned seed = 0; seed < 20; ++seed) {
+      const auto map = map_disagreement({{"acc", resonance(noise(100 + 2 * seed), 12.0, zeta),
+                                          resonance(noise(101 + 2 * seed), 12.0, zeta)}},
+                                        kRate_Hz);
+      for (const auto& r : map.regions) {
+        if (r.evidence != RegionEvidence::kBins) {
+          ++alarms;
+          which += fmt::format("ζ {} seed {}: {:.1f}–{:.1f} Hz {:+.2f} dB\n", zeta, seed, r.low_Hz,
+                               r.high_Hz, r.size_dB);
+          break;
+        }
+      }
+    }
+  }
+  EXPECT_LE(alarms, 2) << which;
+}
+
+// A broad mode (ζ = 0.3) at 15 Hz measured and 17 Hz simulated: the ratio stays within a few dB
+// on its flanks, but the peaks, each located by its half-power parabola, are further apart
+// than they resolve.
+TEST(DisagreementMap, AShiftedBroadPeakIsFoundByItsFrequency) {
+  const auto measured = resonance(noise(30), 15.0, 0.3),
+             simulated = resonance(noise(31), 17.0, 0.3);
+  const auto map = map_disagreement({{"wheel_acc", measured, simulated}}, kRate_Hz);
+  const auto& peak = map.channels.front().peak;
+  EXPECT_TRUE(peak.significant);
+  const double shift = peak.simulated.frequency_Hz - peak.measured.frequency_Hz;
+  EXPECT_GT(shift, 1.3);
+  EXPECT_LT(shift, 2.7);
+  EXPECT_LT(peak.threshold_Hz, 1.5);  // a 9 Hz wide mode, located to a fraction of that
+  bool region = false;
+  for (const auto& r : map.regions) region = region || r.evidence == RegionEvidence::kPeakShift;
+  EXPECT_TRUE(region);
+}
+
+// The measurement is the response plus white sensor noise that dominates above ~25 Hz; the
+// simulation is the response alone (the same input). Without the floor the map reads the noise
+// as the model missing energy; with it (the level added) the two agree.
+TEST(DisagreementMap, TheNoiseFloorKeepsSensorNoiseFromLookingLikeADisagreement) {
+  const auto input = noise(40);
+  const auto response = resonance(input, 5.0, 0.2);
+  auto measured = response;
+  std::mt19937_64 rng(41);
+  const double sigma = 0.05;
+  const auto sensor = testing::white_noise(measured.size(), sigma, rng);
+  for (std::size_t k = 0; k < measured.size(); ++k) measured[k] += sensor[k];
+  const double level = 2.0 * sigma * sigma / kRate_Hz;
+  auto quiet_bins = [](const DisagreementMap& map) {
+    double worst = 0.0;
+    for (const auto& r : map.regions) worst = std::min(worst, r.size_dB);
+    return worst;
+  };
+  const auto without = map_disagreement({{"body_acc", measured, response}}, kRate_Hz);
+  const auto with = map_disagreement({{"body_acc", measured, response, level}}, kRate_Hz);
+  EXPECT_LT(quiet_bins(without), -3.0);
+  EXPECT_TRUE(with.regions.empty())
+      << with.regions.front().low_Hz << " " << with.regions.front().size_dB;
+  EXPECT_LT(with.gap_dB, 0.5 * without.gap_dB);
 }
 
 TEST(DisagreementMap, BadInputNamesTheChannelOrOption) {

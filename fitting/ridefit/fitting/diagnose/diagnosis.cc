@@ -42,11 +42,19 @@ std::vector<std::string> default_free(const model::QuarterCar& car) {
   return free;
 }
 
+// The map of `m` against a simulation, the simulated PSDs with the record's noise floors added
+// (the ones its fits use: given, or estimated from `m`).
 DisagreementMap map_of(const PsdMeasurement& m, const std::vector<double>& body,
-                       const std::vector<double>& wheel, const DisagreementOptions& options) {
+                       const std::vector<double>& wheel, const PsdFitOptions& fit_options,
+                       const DisagreementOptions& options) {
+  const NoiseFloors noise = noise_floors(m, fit_options);
   std::vector<ChannelPair> channels;
-  if (!m.body_acc_m_per_s2.empty()) channels.push_back({"body_acc", m.body_acc_m_per_s2, body});
-  if (!m.wheel_acc_m_per_s2.empty()) channels.push_back({"wheel_acc", m.wheel_acc_m_per_s2, wheel});
+  if (!m.body_acc_m_per_s2.empty()) {
+    channels.push_back({"body_acc", m.body_acc_m_per_s2, body, noise.body_psd});
+  }
+  if (!m.wheel_acc_m_per_s2.empty()) {
+    channels.push_back({"wheel_acc", m.wheel_acc_m_per_s2, wheel, noise.wheel_psd});
+  }
   return map_disagreement(channels, m.sample_rate_Hz, options);
 }
 
@@ -81,11 +89,19 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   s.held_out_cost = held_out->cost;
   s.held_out_signals = {held_out->body_acc_m_per_s2, held_out->wheel_acc_m_per_s2};
   s.held_out_gap =
-      map_of(data.held_out, s.held_out_signals[0], s.held_out_signals[1], map_options).gap_dB;
+      map_of(data.held_out, s.held_out_signals[0], s.held_out_signals[1], options, map_options)
+          .gap_dB;
   return s;
 }
 
 std::string describe(const DisagreementRegion& r) {
+  if (r.evidence == RegionEvidence::kPeakShift) {
+    return fmt::format(
+        "{} peak at {:.1f} Hz measured, {:.1f} Hz simulated: a shift of {:.1f} Hz, beyond the "
+        "{:.1f} Hz the two estimates resolve",
+        r.channel, r.measured_peak_Hz, r.simulated_peak_Hz,
+        std::abs(r.measured_peak_Hz - r.simulated_peak_Hz), r.resolution_Hz);
+  }
   return fmt::format(
       "{} {:.1f}–{:.1f} Hz: simulated {:+.1f} dB against measured (peak {:.1f} Hz "
       "measured, {:.1f} Hz simulated){}",
@@ -152,12 +168,12 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   DiagnosisResult result = result_of(selection, DataKind::kVehicleSpectra);
   const ScoredFit& before = selection.baseline;
   const ScoredFit& after = selection.final_fit;
-  result.before =
-      map_of(data.held_out, before.held_out_signals[0], before.held_out_signals[1], map_options);
+  result.before = map_of(data.held_out, before.held_out_signals[0], before.held_out_signals[1],
+                         final_fit, map_options);
   result.before_body = before.held_out_signals[0];
   result.before_wheel = before.held_out_signals[1];
-  result.after =
-      map_of(data.held_out, after.held_out_signals[0], after.held_out_signals[1], map_options);
+  result.after = map_of(data.held_out, after.held_out_signals[0], after.held_out_signals[1],
+                        final_fit, map_options);
   result.after_body = after.held_out_signals[0];
   result.after_wheel = after.held_out_signals[1];
   result.gap_before = result.before.gap_dB;
@@ -167,9 +183,16 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   // Above the road's band the measured side is sensor noise as much as response, and the
   // simulation's accuracy falls with the step: those regions stay in the map as evidence but do
   // not by themselves make a disagreement "unexplained".
+  // A peak shift beyond what the estimates resolve counts whatever its size in dB: a mode in
+  // the wrong place that no effect moved.
   for (const auto& region : result.after.regions) {
-    if (!region.above_band && std::abs(region.size_dB) >= options.unexplained_dB &&
-        region.high_Hz - region.low_Hz >= options.unexplained_width_Hz) {
+    const bool shift = region.evidence == RegionEvidence::kPeakShift;
+    if (!region.above_band &&
+        (shift ||
+         (std::abs(region.size_dB) >= options.unexplained_dB &&
+          region.high_Hz - region.low_Hz >= options.unexplained_width_Hz) ||
+         (std::abs(region.size_dB) >= options.unexplained_wide_dB &&
+          region.high_Hz - region.low_Hz >= options.unexplained_wide_width_Hz))) {
       result.unexplained.push_back(region);
     }
   }

@@ -43,9 +43,17 @@ struct DiagnosisOptions {
   SelectionOptions selection;     // significance, rounds, threads (gap_unit and refine set here)
   // A disagreement region left after the last accepted effect counts as unexplained when it is
   // inside the excitation band (not above it), its mean size is at least unexplained_dB and it
-  // spans at least unexplained_width_Hz.
+  // spans at least unexplained_width_Hz (or unexplained_wide_dB over unexplained_wide_width_Hz);
+  // or when it is a peak shift (RegionEvidence::kPeakShift:
+  // a channel's peak further from the measured one than the estimates resolve) in the band.
+  // The maps compare the simulated PSD plus the record's sensor-noise floor (fit's
+  // body_noise_psd / wheel_noise_psd, or estimated from the held-out record).
   double unexplained_dB = 1.5;
   double unexplained_width_Hz = 1.0;
+  // Or, wider and shallower (what the pooled band tests find): a mean size of at least
+  // unexplained_wide_dB over at least unexplained_wide_width_Hz.
+  double unexplained_wide_dB = 1.0;
+  double unexplained_wide_width_Hz = 2.0;
 };
 
 struct DiagnosisResult {

@@ -5,9 +5,13 @@
 #include <algorithm>
 #include <boost/math/distributions/fisher_f.hpp>
 #include <cmath>
+#include <span>
 
+#include "ridefit/fitting/diagnose/pooled_bands.h"
 #include "ridefit/fitting/diagnose/residual_statistics.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/signal/equivalent_dof.h"
+#include "ridefit/signal/hann_window.h"
 #include "ridefit/signal/psd_confidence.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"
@@ -67,20 +71,53 @@ double smoothed_peak(const std::vector<double>& f, const std::vector<double>& p,
   return at;
 }
 
-// Runs of significant bins of one sign (single-bin gaps bridged) inside [first, last).
-void find_regions(const ChannelDisagreement& d, std::size_t first, std::size_t last,
-                  bool above_band, const DisagreementOptions& o,
+// Each bin's flagged side inside [first, last): the sign of its ratio where the bin alone is
+// significant, else the sign of the mean of the strongest significant pooled window covering it
+// whose mean is at least min_region_dB, else 0.
+std::vector<int> flagged_sides(const ChannelDisagreement& d, std::size_t first, std::size_t last,
+                               double nu, const std::vector<double>& bin_correlation,
+                               std::size_t max_width_bins, double alpha, double min_scatter_dB,
+                               double min_region_dB) {
+  std::vector<int> side(d.frequency_Hz.size(), 0);
+  if (last > first && max_width_bins >= 2) {
+    std::vector<double> log_ratio;
+    for (std::size_t k = first; k < last; ++k) {
+      log_ratio.push_back(std::log(d.simulated_psd[k] / d.measured_psd[k]));
+    }
+    const double floor = min_scatter_dB * std::log(10.0) / 10.0;
+    const double variance = log_ratio_variance(log_ratio, nu, bin_correlation, floor * floor);
+    auto bands =
+        significant_pooled_bands(log_ratio, variance, bin_correlation, alpha, max_width_bins);
+    std::stable_sort(bands.begin(), bands.end(), [](const PooledBand& a, const PooledBand& b) {
+      return std::abs(a.z) < std::abs(b.z);
+    });
+    for (const auto& band : bands) {  // weakest first: the strongest window has the last word
+      // Only windows that also differ by min_region_dB on average: the union of significant
+      // windows must not dilute a region with the weak bins a wide window takes in.
+      if (std::abs(band.mean_log_ratio) * 10.0 / std::log(10.0) < min_region_dB) continue;
+      for (std::size_t k = band.first; k < band.last; ++k) side[first + k] = band.z > 0 ? 1 : -1;
+    }
+  }
+  for (std::size_t k = first; k < last; ++k) {
+    if (d.significant[k]) side[k] = d.ratio_dB[k] > 0.0 ? 1 : -1;
+  }
+  return side;
+}
+
+// Runs of flagged bins of one side (single-bin gaps bridged) inside [first, last).
+void find_regions(const ChannelDisagreement& d, const std::vector<int>& side, std::size_t first,
+                  std::size_t last, bool above_band, const DisagreementOptions& o,
                   std::vector<DisagreementRegion>& out) {
   std::size_t k = first;
   while (k < last) {
-    if (!d.significant[k]) {
+    if (side[k] == 0) {
       ++k;
       continue;
     }
-    const bool high = d.ratio_dB[k] > 0.0;
-    std::size_t end = k + 1;  // one past the region's last significant bin
+    const int high = side[k];
+    std::size_t end = k + 1;  // one past the region's last flagged bin
     for (std::size_t j = k + 1; j < last; ++j) {
-      const bool same = d.significant[j] && (d.ratio_dB[j] > 0.0) == high;
+      const bool same = side[j] == high;
       if (same) {
         end = j + 1;
       } else if (j > end) {
@@ -90,15 +127,18 @@ void find_regions(const ChannelDisagreement& d, std::size_t first, std::size_t l
     const std::size_t bins = end - k;
     double mean = 0.0;
     std::size_t measured_peak = k, simulated_peak = k;
+    bool single_bins = false;
     for (std::size_t j = k; j < end; ++j) {
       mean += d.ratio_dB[j];
+      single_bins = single_bins || d.significant[j];
       if (d.measured_psd[j] > d.measured_psd[measured_peak]) measured_peak = j;
       if (d.simulated_psd[j] > d.simulated_psd[simulated_peak]) simulated_peak = j;
     }
     mean /= static_cast<double>(bins);
     if (bins >= static_cast<std::size_t>(o.min_region_bins) && std::abs(mean) >= o.min_region_dB) {
       out.push_back({d.channel, d.frequency_Hz[k], d.frequency_Hz[end - 1], mean,
-                     d.frequency_Hz[measured_peak], d.frequency_Hz[simulated_peak], above_band});
+                     d.frequency_Hz[measured_peak], d.frequency_Hz[simulated_peak], above_band,
+                     single_bins ? RegionEvidence::kBins : RegionEvidence::kPooledBand, 0.0});
     }
     k = end;
   }
@@ -130,7 +170,8 @@ DisagreementMap map_disagreement(const std::vector<ChannelPair>& channels, doubl
       const bool in_band = f >= options.band_low_Hz && f <= options.band_high_Hz;
       const bool above = f > options.band_high_Hz && f <= above_high;
       if (!in_band && !above) continue;
-      const double pm = std::max(measured.psd[k], 1e-300), ps = std::max(simulated.psd[k], 1e-300);
+      const double pm = std::max(measured.psd[k], 1e-300);
+      const double ps = std::max(simulated.psd[k] + c.noise_psd, 1e-300);
       const double ratio = 10.0 * std::log10(ps / pm);
       d.frequency_Hz.push_back(f);
       d.measured_psd.push_back(pm);
@@ -171,8 +212,49 @@ DisagreementMap map_disagreement(const std::vector<ChannelPair>& channels, doubl
     d.nrmse = measured_rms > 0.0 ? d.residual_rms / measured_rms : 0.0;
     std::tie(d.residual_max_autocorrelation, d.residual_whiteness_p) = residual_whiteness(residual);
     d.amplitude_dependence = amplitude_dependence(c.measured, c.simulated);
-    find_regions(d, 0, band_bins, false, options, map.regions);
-    find_regions(d, band_bins, d.frequency_Hz.size(), true, options, map.regions);
+    // The band's and the above-band range's bins are pooled (and Bonferroni-counted) apart.
+    const std::vector<double> bin_correlation =
+        signal::welch_bin_correlation(signal::periodic_hann_window(measured.segment_length_samples),
+                                      measured.hop_samples, measured.segment_count, 3);
+    const double nu = measured.degrees_of_freedom[measured.degrees_of_freedom.size() / 2];
+    const auto max_width = static_cast<std::size_t>(
+        std::max(0.0, std::floor(options.pooled_max_width_Hz / measured.frequency_resolution_Hz)));
+    const double alpha = 1.0 - options.confidence;
+    const std::size_t all = d.frequency_Hz.size();
+    std::vector<int> side = flagged_sides(d, 0, band_bins, nu, bin_correlation, max_width, alpha,
+                                          options.pooled_min_scatter_dB, options.min_region_dB);
+    const std::vector<int> above_side =
+        flagged_sides(d, band_bins, all, nu, bin_correlation, max_width, alpha,
+                      options.pooled_min_scatter_dB, options.min_region_dB);
+    std::copy(above_side.begin() + static_cast<std::ptrdiff_t>(band_bins), above_side.end(),
+              side.begin() + static_cast<std::ptrdiff_t>(band_bins));
+    find_regions(d, side, 0, band_bins, false, options, map.regions);
+    find_regions(d, side, band_bins, all, true, options, map.regions);
+    if (options.compare_peaks && band_bins > 0) {
+      const std::span<const double> f(d.frequency_Hz.data(), band_bins);
+      d.peak = compare_peaks(
+          estimate_peak(f, std::span<const double>(d.measured_psd.data(), band_bins), nu,
+                        bin_correlation),
+          estimate_peak(f, std::span<const double>(d.simulated_psd.data(), band_bins), nu,
+                        bin_correlation),
+          measured.frequency_resolution_Hz, alpha / static_cast<double>(channels.size()));
+      if (d.peak.significant) {
+        const double low = std::min(d.peak.measured.frequency_Hz, d.peak.simulated.frequency_Hz);
+        const double high = std::max(d.peak.measured.frequency_Hz, d.peak.simulated.frequency_Hz);
+        double mean = 0.0;
+        std::size_t bins = 0;
+        for (std::size_t k = 0; k < band_bins; ++k) {
+          if (d.frequency_Hz[k] >= low && d.frequency_Hz[k] <= high) {
+            mean += d.ratio_dB[k];
+            ++bins;
+          }
+        }
+        map.regions.push_back({d.channel, low, high,
+                               bins > 0 ? mean / static_cast<double>(bins) : 0.0,
+                               d.peak.measured.frequency_Hz, d.peak.simulated.frequency_Hz, false,
+                               RegionEvidence::kPeakShift, d.peak.threshold_Hz});
+      }
+    }
     gap_power += d.gap_dB * d.gap_dB;
     map.channels.push_back(std::move(d));
   }

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "ridefit/fitting/diagnose/peak_shift.h"
+
 namespace ridefit::fitting::diagnose {
 
 // One channel of a record, measured and simulated on the same time base (same length, same
@@ -11,6 +13,10 @@ struct ChannelPair {
   std::string name;
   std::vector<double> measured;
   std::vector<double> simulated;
+  // The measured channel's white sensor-noise floor, one-sided PSD [unit²/Hz]: added to the
+  // simulated PSD before the comparison (the model as the sensor would show it), so bins where
+  // the measurement is noise do not read as the model missing something.
+  double noise_psd = 0.0;
 };
 
 struct DisagreementOptions {
@@ -24,12 +30,30 @@ struct DisagreementOptions {
   double confidence = 0.99;         // of the measured PSD's χ² interval (signal/psd_confidence.h)
   double min_region_dB = 1.0;       // a region must also differ by at least this much on average
   int min_region_bins = 2;          // and span at least this many bins
+  // Band tests (pooled_bands.h): windows of 2, 4, 8, … bins up to this width, each tested at
+  // the family-wise rate 1 − confidence; 0 = single bins only.
+  double pooled_max_width_Hz = 8.0;
+  // The smallest per-bin scatter of the log ratio the band tests assume (pooled_bands.h
+  // log_ratio_variance), in dB (RMS).
+  double pooled_min_scatter_dB = 0.25;
+  // Peak frequencies (peak_shift.h): measured against simulated per channel, at the rate
+  // 1 − confidence shared over the channels.
+  bool compare_peaks = true;
+};
+
+// What made a region significant.
+enum class RegionEvidence {
+  kBins,        // single bins outside the F(ν, ν) interval
+  kPooledBand,  // only windows of pooled bins (the mean ratio outside its interval)
+  kPeakShift,   // the channel's measured and simulated peaks lie further apart than they resolve
 };
 
 // A band where simulation and measurement differ significantly: contiguous bins where the ratio
-// P_sim/P_meas lies outside the two-sided F(ν, ν) interval on the same side (two Welch estimates
-// with ν degrees of freedom each; gaps of one bin bridged), whose mean difference is at least
-// min_region_dB.
+// P_sim/P_meas lies outside the two-sided F(ν, ν) interval, or that lie in a significant pooled
+// window (pooled_bands.h), on the same side (two Welch estimates with ν degrees of freedom each;
+// gaps of one bin bridged), whose mean difference is at least min_region_dB. Or a peak shift:
+// the band between the measured and the simulated peak of a channel whose peaks differ by more
+// than they resolve (peak_shift.h), whatever its size in dB.
 struct DisagreementRegion {
   std::string channel;
   double low_Hz = 0.0;
@@ -38,6 +62,8 @@ struct DisagreementRegion {
   double measured_peak_Hz = 0.0;   // where the measured PSD is largest inside the region
   double simulated_peak_Hz = 0.0;  // where the simulated PSD is largest inside the region
   bool above_band = false;         // lies above the excitation band
+  RegionEvidence evidence = RegionEvidence::kBins;
+  double resolution_Hz = 0.0;  // a peak shift: the shift that counts (PeakComparison)
 };
 
 struct ChannelDisagreement {
@@ -52,6 +78,9 @@ struct ChannelDisagreement {
   // Peak of each PSD over the band (after 3-bin smoothing so one noisy bin cannot win).
   double measured_peak_Hz = 0.0;
   double simulated_peak_Hz = 0.0;
+  // The peaks located by their half-power parabola, with standard errors, and whether they
+  // differ by more than they resolve (peak_shift.h); set when options.compare_peaks.
+  PeakComparison peak;
   // Time domain: RMS of (simulated − measured), and that over the RMS of the measured signal.
   double residual_rms = 0.0;
   double nrmse = 0.0;
