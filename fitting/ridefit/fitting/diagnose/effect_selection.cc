@@ -159,7 +159,8 @@ Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string
           for (const auto& [key, value] : baseline_values) {
             if (!change.set.count(key)) reset[key] = value;
           }
-          if (!reset.empty()) starts.emplace_back(reset, 0.9);
+          if (!reset.empty() && start.kind == DataKind::kStrutLoops)
+            starts.emplace_back(reset, 0.9);
           for (const auto& [other_start, margin] : starts) {
             EffectChange other = change;
             for (const auto& [key, value] : other_start) other.set[key] = value;
@@ -267,7 +268,7 @@ Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string
       bounds = trial_bounds[best];
       current = scores[best];
       reported = refine(current, free, bounds);
-      if (options.refine && runner_up[best]) {
+      if (options.refine && runner_up[best] && start.kind == DataKind::kStrutLoops) {
         ScoredFit other = refine(*runner_up[best], free, bounds);
         if (other.failure.empty() && other.training_cost < reported.training_cost) {
           reported = std::move(other);

@@ -104,10 +104,12 @@ struct Selection {
 // Fits the baseline's `free` parameters, then, round by round, tries each applicable effect of
 // `library` in parallel (adds it, refits its and the baseline's free parameters), ranks them by
 // held-out cost and accepts the best if significant; stops when none is or after max_effects.
-// Each effect is fitted from the model so far and, when the fitted baseline moved a shared
-// parameter by more than 10 % from the baseline's own value (it may have absorbed the missing
-// effect: damping imitating friction), also with the shared parameters back at the baseline's
-// values; the better training cost is kept.
+// On strut loops each effect is fitted from the model so far and, when the fitted baseline moved
+// a shared parameter by more than 10 % from the baseline's own value (it may have absorbed the
+// missing effect: damping imitating friction), also with the shared parameters back at the
+// baseline's values, kept when its training cost is 10 % lower; the accepted effect's reported
+// refit runs from both. Spectra keep the model-so-far start only: there the screening fits stop
+// early and the extra start once traded a fit at the true body mass for a worse one.
 // RunError when the baseline cannot be fitted.
 Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string> free,
                          ParameterBounds bounds, const std::vector<const Effect*>& library,
