@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "ridefit/fitting/strut_parameters.h"
+#include "support/loop_diagnosis_cases.h"
 #include "support/passat.h"
 #include "support/rig_record.h"
 
@@ -27,27 +28,14 @@ LoopDiagnosisData records_of(const model::StrutTestParameters<double>& truth, un
   return split_loops({rig_record(truth, seed, false), rig_record(truth, seed + 1000, true)});
 }
 
-model::StrutTestParameters<double> passat_strut() {
-  auto strut = strut_on_rig(testing::passat_corner().parameters);
-  strut.coulomb_force_N = 60.0;
-  strut.force_offset_N = 2.5;
-  return strut;
-}
+model::StrutTestParameters<double> passat_strut() { return testing::passat_rig_strut(); }
 
 DiagnosisModel baseline_of(const model::StrutTestParameters<double>& strut) {
-  DiagnosisModel m;
-  m.kind = DataKind::kStrutLoops;
-  m.strut = strut;
-  m.strut.force_offset_N = 0.0;
-  return m;
+  return testing::loop_baseline(strut);
 }
 
 double fitted(const DiagnosisResult& r, const std::string& name) {
-  for (const auto& v : r.final_parameters) {
-    if (v.name == name) return v.value;
-  }
-  ADD_FAILURE() << name << " was not fitted";
-  return NAN;
+  return testing::final_value(r, name);
 }
 
 void expect_named_first(const DiagnosisResult& r, const std::string& id) {

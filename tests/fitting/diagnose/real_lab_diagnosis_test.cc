@@ -12,32 +12,20 @@
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/signal/statistics.h"
 #include "support/controlled_damper_record.h"
+#include "support/loop_diagnosis_cases.h"
 #include "support/passat.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
 
-model::StrutTestParameters<double> passat_strut() {
-  auto strut = strut_on_rig(testing::passat_corner().parameters);
-  strut.coulomb_force_N = 60.0;
-  strut.force_offset_N = 2.5;
-  return strut;
-}
+model::StrutTestParameters<double> passat_strut() { return testing::passat_rig_strut(); }
 
 DiagnosisModel baseline_of(const model::StrutTestParameters<double>& strut) {
-  DiagnosisModel m;
-  m.kind = DataKind::kStrutLoops;
-  m.strut = strut;
-  m.strut.force_offset_N = 0.0;
-  return m;
+  return testing::loop_baseline(strut);
 }
 
 double fitted(const DiagnosisResult& r, const std::string& name) {
-  for (const auto& v : r.final_parameters) {
-    if (v.name == name) return v.value;
-  }
-  ADD_FAILURE() << name << " was not fitted";
-  return NAN;
+  return testing::final_value(r, name);
 }
 
 // A triangle of ±3 mm at 1 mm/s (12 s a cycle), two cycles at 50 Hz.
