@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -146,6 +147,39 @@ TEST_F(Cli, BadExcitationAndFlagsAreRejected) {
                    "coulomb_force_N");
   expect_bad_input("simulate " + model() + " " + short_sweep() + " --rate -5", "rate");
   expect_bad_input("simulate " + model() + " /nonexistent/exc.yaml", "exc.yaml");
+}
+
+// A measured record with a coil current: a controlled damper follows it (its filtered command is
+// written), a passive model says it ignores it, and a controlled model on a road without one says
+// it runs at command 0.
+TEST_F(Cli, SimulateFollowsTheRecordsDamperCommand) {
+  std::string csv = "time[s],road[mm],current[mA]\n";
+  for (int k = 0; k <= 400; ++k) {
+    csv += std::to_string(0.005 * k) + "," + std::to_string(2.0 * std::sin(0.1 * k)) + "," +
+           (k < 200 ? "0" : "1500") + "\n";
+  }
+  write("drive.csv", csv);
+  const std::string excitation = write("drive.yaml", "type: measured\nfile: drive.csv\n");
+  const std::string controlled = model_with(
+      "dahl_exponent", "dahl_exponent: 1\ndamping_per_command_Ns_per_m: 800\ncommand_lag_s: 0.015");
+  const fs::path out = dir_ / "run.csv";
+  CliRun run =
+      run_cli("simulate " + controlled + " " + excitation + " --rate 200 -o " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  std::ifstream in(out);
+  std::string header, line, last;
+  std::getline(in, header);
+  EXPECT_NE(header.find(",damper_command[A]"), std::string::npos) << header;
+  while (std::getline(in, line)) last = line;
+  // 1.5 A held for 1 s against a 15 ms lag: the filtered command has arrived.
+  EXPECT_NEAR(std::stod(last.substr(last.rfind(',') + 1)), 1.5, 1e-6) << last;
+
+  run = run_cli("simulate " + model() + " " + excitation + " --rate 200");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("the damper stays passive"), std::string::npos) << run.output;
+  run = run_cli("simulate " + controlled + " " + short_sweep() + " --rate 200");
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("runs at command 0"), std::string::npos) << run.output;
 }
 
 TEST_F(Cli, BadMeasuredRoadCsvIsRejectedWithoutOutput) {

@@ -100,5 +100,33 @@ INSTANTIATE_TEST_SUITE_P(
         ShippedCase{"rig_baseline_only", "vehicles/passat_b8_front.yaml", {}}),
     [](const ::testing::TestParamInfo<ShippedCase>& case_info) { return case_info.param.name; });
 
+// datasets/lab/semi_active_drive.csv: an MR-like damper following its coil current on the road
+// (truth.yaml: c = 600 + 1200·ū N·s/m), diagnosed from the passive data sheet (1800 N·s/m).
+TEST(ShippedLabDrive, SemiActiveDriveNamesCommandDependence) {
+  testing::TempDir dir("ridefit_shipped_drive");
+  const auto run = run_cli(
+      "diagnose " + dataset("lab/mr_car_passive.yaml") + " " +
+      dataset("lab/semi_active_drive.csv") +
+      " --effects command_dependence,damper_friction,damper_digressive --json -q --threads 1 -o " +
+      (dir.path() / "diagnosis").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output.substr(run.output.find('{')));
+  EXPECT_EQ(j["named"].get<std::vector<std::string>>(),
+            std::vector<std::string>{"command_dependence"})
+      << j["verdict"];
+  int found = 0;
+  for (const auto& p : j["final_parameters"]) {
+    if (p["name"] == "damping_per_command_Ns_per_m") {
+      EXPECT_NEAR(p["value"].get<double>(), 1200.0, 60.0);
+      ++found;
+    }
+    if (p["name"] == "damping_Ns_per_m") {
+      EXPECT_NEAR(p["value"].get<double>(), 600.0, 30.0);
+      ++found;
+    }
+  }
+  EXPECT_EQ(found, 2) << run.output;
+}
+
 }  // namespace
 }  // namespace ridefit

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <vector>
@@ -75,7 +76,9 @@ TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 560000.0);
 // control, not the tangent), both parameters, every bin. (The Coulomb-force column is the one
 // that caught signed_power dropping the tangent at s = 0, where a sliding Dahl element sits;
 // scalar_math.h.)
-void check_gradient(const std::optional<double>& noise_psd) {
+// With `commanded`, the record carries a coil current (1 + 0.8·sin(2π·0.7·t) A) that a controlled
+// damper follows through its lag, and the columns are the damping's slope and the lag.
+void check_gradient(const std::optional<double>& noise_psd, bool commanded = false) {
   auto m = measure(488000.0);
   m.time_s.resize(10001);  // 10 s are enough for the check
   m.body_acc_m_per_s2.resize(10001);
@@ -83,9 +86,22 @@ void check_gradient(const std::optional<double>& noise_psd) {
   auto at = testing::passat_corner().parameters;
   at.top_mount_stiffness_N_per_m *= 1.1;  // off the truth, so residuals are not zero
   at.coulomb_force_N *= 0.9;
-  const model::QuarterCar car(model::DamperState::kStickSlip, at);
   PsdFitOptions options;
   options.free = {"top_mount_stiffness_N_per_m", "coulomb_force_N"};
+  if (commanded) {
+    const auto& road = dynamic_cast<const road::MeasuredRoad&>(*m.road);
+    std::vector<double> elevation, current;
+    for (double t : m.time_s) {
+      elevation.push_back(road.at(t).elevation_m);
+      current.push_back(1.0 + 0.8 * std::sin(2.0 * std::numbers::pi * 0.7 * t));
+    }
+    m.road = std::make_shared<road::MeasuredRoad>(m.time_s, elevation, current, "A");
+    at.damping_per_command_Ns_per_m = 300.0;
+    at.command_lag_s = 0.02;
+    options.free = {"damping_per_command_Ns_per_m", "command_lag_s"};
+  }
+  const model::QuarterCar car =
+      model::QuarterCar(model::DamperState::kStickSlip, at).with_command_from_road(commanded);
   options.segment_s = 2.0;
   options.body_noise_psd = noise_psd;
   options.wheel_noise_psd = noise_psd;
@@ -130,6 +146,9 @@ void check_gradient(const std::optional<double>& noise_psd) {
 }
 
 TEST(PsdFit, GradientCheckAgainstCentralDifferences) { check_gradient(0.0); }
+
+// The damping's command slope and the command's lag, through the filtered-command state.
+TEST(PsdFit, GradientCheckForAControlledDamperFollowingTheRecord) { check_gradient(0.0, true); }
 
 // With a floor N, the residual is ln(P + N) − b·q·(2 − q) − ln P_meas and its derivative
 // dP·(1 + 2·b·q·(1 − q))/(P + N). 1e-4 (m/s²)²/Hz lies inside the band's levels (checked: it

@@ -105,5 +105,40 @@ TEST_F(RoadMeasuredTest, AbsurdRecordingsAreInputErrors) {
   EXPECT_NO_THROW(MeasuredRoad(t, h));
 }
 
+TEST_F(RoadMeasuredTest, ACommandColumnIsCarriedLinearlyInterpolatedAndHeldAtItsEnds) {
+  // A controlled damper's coil current in mA, switching between 0 and 2 A.
+  std::string csv = "time[s],road[mm],current[mA]\n";
+  for (int k = 0; k < 10; ++k) {
+    csv += std::to_string(0.01 * k) + ",0.5," + (k < 5 ? "0" : "2000") + "\n";
+  }
+  const MeasuredRoad road = load_measured_road(write("switching.csv", csv));
+  ASSERT_TRUE(road.has_command());
+  EXPECT_EQ(road.command_unit(), "A");
+  EXPECT_DOUBLE_EQ(road.at(0.02).command, 0.0);
+  EXPECT_NEAR(road.at(0.045).command, 1.0, 1e-12);  // halfway up the ramp between samples
+  EXPECT_NEAR(road.at(0.0475).command, 1.5, 1e-12);
+  EXPECT_DOUBLE_EQ(road.at(0.07).command, 2.0);
+  EXPECT_DOUBLE_EQ(road.at(-1.0).command, 0.0);
+  EXPECT_DOUBLE_EQ(road.at(5.0).command, 2.0);
+  // Without one, no command (0), and a record with both kinds refused by name.
+  const MeasuredRoad plain =
+      load_measured_road(write("plain.csv", "time[s],road[m]\n0,0\n0.1,0\n0.2,0\n0.3,0\n0.4,0\n"));
+  EXPECT_FALSE(plain.has_command());
+  EXPECT_EQ(plain.at(0.2).command, 0.0);
+  const std::string both = testing::input_error_message([&] {
+    load_measured_road(write("both.csv",
+                             "time[s],road[m],current[A],voltage[V]\n0,0,0,0\n0.1,0,0,0\n"
+                             "0.2,0,0,0\n0.3,0,0,0\n0.4,0,0,0\n"));
+  });
+  EXPECT_NE(both.find("both.csv"), std::string::npos) << both;
+  EXPECT_NE(both.find("both a current and a voltage"), std::string::npos) << both;
+  const std::string wrong_unit = testing::input_error_message([&] {
+    load_measured_road(write(
+        "unit.csv", "time[s],road[m],current[V]\n0,0,0\n0.1,0,0\n0.2,0,0\n0.3,0,0\n0.4,0,0\n"));
+  });
+  EXPECT_NE(wrong_unit.find("current is in V, expected a current"), std::string::npos)
+      << wrong_unit;
+}
+
 }  // namespace
 }  // namespace ridefit::road

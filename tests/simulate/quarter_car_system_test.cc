@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "support/jacobian_check.h"
 #include "support/passat.h"
 #include "support/sine_road.h"
 
@@ -15,25 +16,8 @@ namespace {
 void expect_jacobian_matches_central_differences(const model::QuarterCar& car,
                                                  const std::vector<double>& x) {
   const testing::SineRoad road(2e-3, 3.0, 10.0);
-  const QuarterCarSystem system(car, road);
-  const int n = system.size();
-  const double t = 0.37;
-  std::vector<double> jacobian(static_cast<std::size_t>(n * n));
-  ASSERT_TRUE(system.jacobian(t, x.data(), jacobian.data()));
-  for (int col = 0; col < n; ++col) {
-    const double h = 1e-6 * system.typical_magnitude(col);
-    std::vector<double> plus = x, minus = x, f_plus(n), f_minus(n);
-    plus[col] += h;
-    minus[col] -= h;
-    ASSERT_TRUE(system.derivatives(t, plus.data(), f_plus.data()));
-    ASSERT_TRUE(system.derivatives(t, minus.data(), f_minus.data()));
-    for (int row = 0; row < n; ++row) {
-      const double fd = (f_plus[row] - f_minus[row]) / (2.0 * h);
-      const double exact = jacobian[static_cast<std::size_t>(col * n + row)];
-      EXPECT_NEAR(exact, fd, 1e-6 * std::max(1.0, std::abs(fd)))
-          << "d f" << row << " / d x" << col << " (" << model::to_string(car.damper_state()) << ")";
-    }
-  }
+  testing::expect_jacobian_matches_central_differences(QuarterCarSystem(car, road), 0.37, x,
+                                                       model::to_string(car.damper_state()));
 }
 
 TEST(QuarterCarSystem, JacobianMatchesCentralDifferencesForEveryTopology) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include "command_options.h"
 #include "ridefit/io/atomic_file.h"
@@ -22,7 +23,7 @@
 namespace ridefit::cli {
 namespace {
 
-io::CsvTable to_table(const simulate::QuarterCarResponse& r) {
+io::CsvTable to_table(const simulate::QuarterCarResponse& r, const std::string& command_unit) {
   io::CsvTable table;
   table.add("time", "s", r.time_s);
   table.add("road", "m", r.road_m);
@@ -34,6 +35,7 @@ io::CsvTable to_table(const simulate::QuarterCarResponse& r) {
   table.add("friction_force", "N", r.friction_force_N);
   table.add("top_mount_deflection", "m", r.top_mount_deflection_m);
   table.add("stuck", "1", r.stuck);
+  if (!r.damper_command.empty()) table.add("damper_command", command_unit, r.damper_command);
   return table;
 }
 
@@ -51,7 +53,20 @@ void run(const SimulateFlags& flags) {
   const auto model_file =
       io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), flags.damper_state);
   const auto road = road::load_excitation(flags.excitation_file);
-  const model::QuarterCar car = model_file.make_model();
+  // A controlled damper follows the record's command (a current or voltage column of a measured
+  // excitation); say when one of the two is there without the other.
+  const model::QuarterCar car = model_file.make_model().with_command_from_road(road->has_command());
+  if (road->has_command() && !car.follows_command()) {
+    std::cerr << fmt::format(
+        "note: {} carries a damper command ({}), but {} has no damping_per_command_Ns_per_m or "
+        "coulomb_force_per_command_N: the damper stays passive\n",
+        flags.excitation_file, road->command_unit(), flags.model_file);
+  } else if (!road->has_command() && model_file.parameters.commanded()) {
+    std::cerr << fmt::format(
+        "note: {} describes a controlled damper, but {} carries no command (a current or voltage "
+        "column of a measured excitation): the damper runs at command 0\n",
+        flags.model_file, flags.excitation_file);
+  }
 
   simulate::SimulationOptions options;
   options.output_rate_Hz = flags.output_rate_Hz;
@@ -66,7 +81,9 @@ void run(const SimulateFlags& flags) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
-  if (!flags.output_file.empty()) to_table(response).write(flags.output_file);
+  if (!flags.output_file.empty()) {
+    to_table(response, road->command_unit()).write(flags.output_file);
+  }
 
   double stuck_share = 0.0;
   for (double s : response.stuck) stuck_share += s;

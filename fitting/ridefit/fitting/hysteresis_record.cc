@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 
@@ -26,24 +27,9 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
   }
   record.displacement_m = displacement.values;
   record.force_N = force.values;
-  const bool current = table.has("current");
-  const bool voltage = table.has("voltage");
-  if (current && voltage) {
-    throw InputError(fmt::format(
-        "{}: both a current and a voltage column; a controlled damper has one command, keep the "
-        "one the damper's law is written in",
-        csv_file.string()));
-  }
-  if (current || voltage) {
-    const io::CsvColumn& command = table.column(current ? "current" : "voltage");
-    const std::string expected = current ? "A" : "V";
-    if (command.unit != expected) {
-      throw InputError(fmt::format("{}: column {} is in {}, expected {} ({}, m{})",
-                                   csv_file.string(), current ? "current" : "voltage", command.unit,
-                                   current ? "a current" : "a voltage", expected, expected));
-    }
-    record.command = command.values;
-    record.command_unit = expected;
+  if (auto command = io::read_command_column(table, csv_file.string())) {
+    record.command = std::move(command->values);
+    record.command_unit = command->unit;
   }
   if (record.time_s.size() < 20) {
     throw InputError(fmt::format("{}: {} samples; a hysteresis fit needs at least 20",

@@ -14,6 +14,7 @@
 #include <unsupported/Eigen/FFT>
 
 #include "ridefit/fitting/integration_resolution.h"
+#include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/model/quarter_car_parameter_names.h"
@@ -144,7 +145,7 @@ class PsdCost : public ceres::CostFunction {
       field(jets, fields_[i]) = Jet(v, static_cast<int>(i));
       field(jets, fields_[i]).v[static_cast<Eigen::Index>(i)] = units_[i];
     }
-    const model::QuarterCar car(car_.damper_state(), values);
+    const model::QuarterCar car(car_.damper_state(), values, car_.command_input());
     if (!jacobians) return evaluate_values(car, values, residuals);
     const auto series =
         simulate::quarter_car_accelerations<Jet>(car, jets, *m_.road, m_.time_s, solver_);
@@ -205,7 +206,7 @@ class PsdCost : public ceres::CostFunction {
   }
 
   const PsdMeasurement& m_;
-  const model::QuarterCar& car_;
+  const model::QuarterCar car_;  // a copy: callers may pass a car made for the call
   std::vector<std::size_t> fields_;
   std::vector<double> units_;
   WelchBins welch_;
@@ -247,6 +248,14 @@ PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
   m.source = csv_file.string();
   m.time_s = table.time_s();
   m.sample_rate_Hz = signal::uniform_sample_rate_Hz(m.time_s, m.source);
+  const auto command = io::read_command_column(table, m.source);
+  if (command && !excitation_file.empty()) {
+    throw InputError(fmt::format(
+        "{} has a {} column but the road comes from the excitation file {}: a controlled "
+        "damper's command and its road must share the record's time base; give the road as a "
+        "column of the record",
+        m.source, command->name, excitation_file.string()));
+  }
   if (!excitation_file.empty()) {
     if (table.has("road")) {
       throw InputError(fmt::format(
@@ -270,7 +279,9 @@ PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
       throw InputError(
           fmt::format("{}: column road is in {}, expected a length (m, mm)", m.source, road.unit));
     }
-    m.road = std::make_shared<road::MeasuredRoad>(m.time_s, road.values);
+    m.road = command ? std::make_shared<road::MeasuredRoad>(m.time_s, road.values, command->values,
+                                                            command->unit)
+                     : std::make_shared<road::MeasuredRoad>(m.time_s, road.values);
   }
   if (table.has("body_acc")) m.body_acc_m_per_s2 = table.column("body_acc").values;
   if (table.has("wheel_acc")) m.wheel_acc_m_per_s2 = table.column("wheel_acc").values;
@@ -380,8 +391,10 @@ NoiseFloors noise_floors(const PsdMeasurement& m, const PsdFitOptions& options) 
                    options.band_high_Hz, "--wheel-noise-psd")};
 }
 
-std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::QuarterCar& car,
+std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::QuarterCar& given_car,
                                         const PsdFitOptions& options) {
+  // A controlled damper follows the record's command when it has one.
+  const model::QuarterCar car = given_car.with_command_from_road(m.road->has_command());
   const PsdSetup setup = prepare(m, car, options, false);
   const auto series = simulate::quarter_car_accelerations<double>(
       car, car.parameters(), *m.road, m.time_s, solver_options(options));
@@ -407,14 +420,19 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
   return mismatch;
 }
 
-ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement, const model::QuarterCar& car,
+ceres::CostFunction* make_psd_cost(const PsdMeasurement& measurement,
+                                   const model::QuarterCar& given_car,
                                    const PsdFitOptions& options) {
+  // A controlled damper follows the record's command when it has one.
+  const model::QuarterCar car = given_car.with_command_from_road(measurement.road->has_command());
   const PsdSetup setup = prepare(measurement, car, options);
   return new_psd_cost(measurement, car, setup, solver_options(options));
 }
 
-PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
+PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car,
                      const PsdFitOptions& options) {
+  // A controlled damper follows the record's command when it has one.
+  const model::QuarterCar car = given_car.with_command_from_road(m.road->has_command());
   const PsdSetup setup = prepare(m, car, options);
   const auto& [fields, bounds, units, welch, body_log, wheel_log, noise, log_bias] = setup;
   PsdFitResult best;
@@ -559,7 +577,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& car,
     best.frequency_Hz.push_back(static_cast<double>(b) * m.sample_rate_Hz /
                                 static_cast<double>(welch.length));
   }
-  const model::QuarterCar fitted_car(car.damper_state(), best.fitted);
+  const model::QuarterCar fitted_car(car.damper_state(), best.fitted, car.command_input());
   const auto series = simulate::quarter_car_accelerations<double>(
       fitted_car, best.fitted, *m.road, m.time_s, solver_options(options));
   auto exp_of = [](std::vector<double> v) {

@@ -31,7 +31,9 @@ struct PsdMeasurement {
 
 // Reads a CSV with `time` and at least one of `body_acc`, `wheel_acc` (any supported units), and
 // the road either as a `road` column or, when `excitation_file` is given, from that excitation
-// (a known rig or road input). InputError naming the file and what is missing.
+// (a known rig or road input). A `current` or `voltage` column is a controlled damper's command:
+// the road then carries it (RoadInput::has_command) and the fits' cars follow it. InputError
+// naming the file and what is missing.
 PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
                                     const std::filesystem::path& excitation_file = {});
 

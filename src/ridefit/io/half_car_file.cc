@@ -29,7 +29,9 @@ constexpr double kSymmetricDamper = 1.0;
 // control section are optional too, but only as a group (a lone coulomb_force_N has no
 // sensible partners), so they are not here.
 constexpr const char* kAxles[] = {"front", "rear"};
-constexpr const char* kOptionalAxleKeys[] = {"compression_to_rebound_ratio"};
+constexpr const char* kOptionalAxleKeys[] = {"compression_to_rebound_ratio",
+                                             "damping_per_command_Ns_per_m",
+                                             "coulomb_force_per_command_N", "command_lag_s"};
 
 std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlMap& axle) {
   model::AxleTopology topology;
@@ -71,6 +73,14 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
     p.coulomb_force_N = axle.non_negative_up_to("coulomb_force_N", 1e5);
     p.dahl_exponent = axle.number_in("dahl_exponent", 0.1, 10.0);
   }
+  // A controlled damper (the same keys and limits as the quarter car's).
+  if (axle.has("damping_per_command_Ns_per_m")) {
+    p.damping_per_command_Ns_per_m = axle.number_in("damping_per_command_Ns_per_m", -1e5, 1e6);
+  }
+  if (axle.has("coulomb_force_per_command_N")) {
+    p.coulomb_force_per_command_N = axle.number_in("coulomb_force_per_command_N", -1e4, 1e4);
+  }
+  if (axle.has("command_lag_s")) p.command_lag_s = axle.number_in("command_lag_s", 0.0, 1.0);
   axle.finish();
   return {topology, p};
 }
@@ -145,6 +155,20 @@ HalfCarFile read_half_car(const YamlMap& file) {
           : model::UpperBodySupport::kLowerBody;
   upper.finish();
   if (file.has("control")) result.topology.control = read_control(file.map("control"));
+  // A semi-active law reaches its coefficient through a controlled damper's command,
+  // u = (c_law − c)/c_b: that needs a damping slope.
+  if (result.topology.control.law != model::ControlLaw::kPassive) {
+    for (const auto& [name, axle] : {std::pair{"front", &p.front}, {"rear", &p.rear}}) {
+      if (axle->commanded() && axle->damping_per_command_Ns_per_m == 0.0) {
+        const YamlMap section = file.map(name);
+        throw InputError(fmt::format(
+            "{}: {}.coulomb_force_per_command_N without {}.damping_per_command_Ns_per_m: the "
+            "control law sets the damping through the command, u = (c_law - c)/c_b, so give the "
+            "damper's damping slope c_b (N*s/m per A or V, not 0)",
+            section.locate("coulomb_force_per_command_N"), name, name));
+      }
+    }
+  }
   file.finish();
   return result;
 }

@@ -32,6 +32,12 @@ namespace ridefit::io {
 //     dahl_sigma0_N_per_m: 5.0e6            # required for stick_slip, checked if present
 //     coulomb_force_N: 60
 //     dahl_exponent: 1
+//     # A controlled damper under the control law (each optional, as the quarter car's):
+//     # c(ū) = c + c_b·ū, Fc(ū) = Fc + Fc_b·ū, ū' = (u − ū)/τ with the law's command
+//     # u = (c_law − c)/c_b (so a friction slope under a law needs a damping slope).
+//     damping_per_command_Ns_per_m: 1000    # c_b per A or V, in [-1e5, 1e6]
+//     coulomb_force_per_command_N: 40       # Fc_b per A or V, in [-1e4, 1e4]
+//     command_lag_s: 0.015                  # τ, in [0, 1]
 //   seat:       {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …}
 //   lower_body: {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …}
 //   upper_body: {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …,
@@ -57,7 +63,8 @@ struct HalfCarFile {
 // {"front.suspension", "strut"}. The key must exist in the file (an unknown one is an
 // InputError naming it and `origin`, e.g. "--set" or the study file), so a typo never adds a
 // key that nothing reads. The exceptions are the optional keys that stand alone with a default,
-// front.compression_to_rebound_ratio and rear.compression_to_rebound_ratio: an override sets
+// front.compression_to_rebound_ratio and rear.compression_to_rebound_ratio (and the controlled
+// damper's three keys under front and rear): an override sets
 // them whether or not the file has them.
 using KeyOverride = std::pair<std::string, std::string>;
 

@@ -50,7 +50,8 @@ namespace ridefit::io {
 //   static_friction_force_N: 90            # Fs, in [coulomb_force_N, 1e5], default Fc
 //   # Controlled (semi-active) damper, strut_test.h: c(ū) = c + c_b·ū, Fc(ū) = Fc + Fc_b·ū,
 //   # ū' = (u − ū)/τ with u the record's command (current[A] or voltage[V]); each optional.
-//   # On the road the command is 0 (no command input yet); rig tests read it from the record.
+//   # Rig tests and vehicle records read u from their current or voltage column (a measured
+//   # excitation's too); without one the damper runs at u = 0.
 //   damping_per_command_Ns_per_m: 2000     # c_b per A or V, in [-1e5, 1e6]
 //   coulomb_force_per_command_N: 200       # Fc_b per A or V, in [-1e4, 1e4]
 //   command_lag_s: 0.01                    # τ, in [0, 1]; 0 = ū follows u at once

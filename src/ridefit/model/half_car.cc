@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 #include "ridefit/model/quarter_car.h"
 
@@ -40,10 +41,14 @@ std::vector<std::string> HalfCar::state_names() const {
   std::vector<std::string> names = {"z_body", "pitch",        "z_front_wheel", "z_rear_wheel",
                                     "z_seat", "z_lower_body", "z_upper_body"};
   for (int i = 0; i < kHalfCarDofs; ++i) names.push_back("d/dt " + names[i]);
-  for (const auto& [name, axle] : {std::pair{"front", topology_.front}, {"rear", topology_.rear}}) {
+  for (const auto& [name, axle, values] : {std::tuple{"front", topology_.front, parameters_.front},
+                                           std::tuple{"rear", topology_.rear, parameters_.rear}}) {
     const int count = axle.internal_state_count();
     if (count >= 1) names.push_back(std::string(name) + "_damper_deflection");
     if (count >= 2) names.push_back(std::string(name) + "_friction_force");
+    if (axle_state_count(axle, values) > count) {
+      names.push_back(std::string(name) + "_filtered_command");
+    }
   }
   return names;
 }
@@ -65,7 +70,7 @@ HalfCarOutputs HalfCar::outputs(const double* x, const AxleRoads& roads) const {
   out.front_wheel_acc_m_per_s2 = a[kFrontWheel];
   out.rear_wheel_acc_m_per_s2 = a[kRearWheel];
 
-  std::vector<double> scratch(4, 0.0);
+  std::vector<double> scratch(8, 0.0);
   const double* internal = x + 2 * kHalfCarDofs;
   auto axle = [&](const AxleTopology& top, const HalfCarAxle<double>& ax, double arm, int wheel,
                   const road::RoadSample& road, const double* states, double& travel, double& tyre,
@@ -73,8 +78,8 @@ HalfCarOutputs HalfCar::outputs(const double* x, const AxleRoads& roads) const {
     const double body_velocity = v[kBodyHeave] + arm * v[kBodyPitch];
     travel = q[kBodyHeave] + arm * q[kBodyPitch] - q[wheel];
     const AxleForces<double> f =
-        axle_forces(top, ax, travel, body_velocity - v[wheel], body_velocity, v[wheel], q[wheel],
-                    road, states, scratch.data());
+        axle_forces(top, ax, ax, travel, body_velocity - v[wheel], body_velocity, v[wheel],
+                    q[wheel], road, states, scratch.data());
     tyre = f.tyre_N;
     damper = f.damper_N;
     friction = f.friction_N;
@@ -83,7 +88,7 @@ HalfCarOutputs HalfCar::outputs(const double* x, const AxleRoads& roads) const {
     if (top.suspension == AxleSuspension::kStrut) {
       if (top.damper_state == DamperState::kStick) stuck = 1.0;
       if (top.damper_state == DamperState::kStickSlip &&
-          std::abs(f.friction_N) < QuarterCar::kStuckForceShare * ax.coulomb_force_N) {
+          std::abs(f.friction_N) < QuarterCar::kStuckForceShare * f.friction_level_N) {
         stuck = 1.0;
       }
     }
@@ -93,7 +98,7 @@ HalfCarOutputs HalfCar::outputs(const double* x, const AxleRoads& roads) const {
        out.front_travel_m, out.front_tyre_force_N, out.front_damper_force_N,
        out.front_friction_force_N, out.front_damping_Ns_per_m, out.front_stuck);
   axle(topology_.rear, p.rear, -p.rear_axle_distance_m, kRearWheel, roads.rear,
-       internal + topology_.front.internal_state_count(), out.rear_travel_m, out.rear_tyre_force_N,
+       internal + front_state_count(), out.rear_travel_m, out.rear_tyre_force_N,
        out.rear_damper_force_N, out.rear_friction_force_N, out.rear_damping_Ns_per_m,
        out.rear_stuck);
   return out;

@@ -44,6 +44,17 @@ struct HalfCarAxle {
   T dahl_exponent;
   // c_c = r·c_r. Last, with its default, so an initialiser without it keeps the symmetric damper.
   T compression_to_rebound_ratio{1.0};
+  // A controlled damper (QuarterCarParameters): damping and friction level affine in the lagged
+  // command, c(ū) = c + c_b·ū, Fc(ū) = Fc + Fc_b·ū, ū' = (u − ū)/τ. Under a semi-active law the
+  // command u is the one that asks for the law's coefficient, u = (c_law − c)/c_b; with the
+  // passive law u = 0.
+  T damping_per_command_Ns_per_m{0.0};
+  T coulomb_force_per_command_N{0.0};
+  T command_lag_s{0.0};
+
+  bool commanded() const {
+    return damping_per_command_Ns_per_m != 0.0 || coulomb_force_per_command_N != 0.0;
+  }
 
   // The damper with coefficient `rebound_damping` in rebound (the axle's own, or a
   // controller's) and this axle's compression ratio.
@@ -57,11 +68,19 @@ struct HalfCarAxle {
   }
   template <typename U>
   HalfCarAxle<U> cast() const {
-    return {U(unsprung_mass_kg),      U(tyre_stiffness_N_per_m),
-            U(tyre_damping_Ns_per_m), U(spring_stiffness_N_per_m),
-            U(damping_Ns_per_m),      U(top_mount_stiffness_N_per_m),
-            U(dahl_sigma0_N_per_m),   U(coulomb_force_N),
-            U(dahl_exponent),         U(compression_to_rebound_ratio)};
+    return {U(unsprung_mass_kg),
+            U(tyre_stiffness_N_per_m),
+            U(tyre_damping_Ns_per_m),
+            U(spring_stiffness_N_per_m),
+            U(damping_Ns_per_m),
+            U(top_mount_stiffness_N_per_m),
+            U(dahl_sigma0_N_per_m),
+            U(coulomb_force_N),
+            U(dahl_exponent),
+            U(compression_to_rebound_ratio),
+            U(damping_per_command_Ns_per_m),
+            U(coulomb_force_per_command_N),
+            U(command_lag_s)};
   }
 };
 
@@ -170,17 +189,27 @@ struct HalfCarOutputs {
 // wheel and road; the seat between the body point at a3 and the seat mass; the lower body on
 // the seat; the upper body on the seat (seed 001) or on the lower body.
 //
-// State: [q (7), q' (7), front strut states (z_c, F_f as the damper state has them), rear strut
-// states]. Sizes: 14 for passive axles, up to 18 with two stick/slip struts.
+// A controlled damper (HalfCarAxle::commanded) under a semi-active law follows the command that
+// asks for the law's coefficient, through its lag: the coefficient and the friction level lag
+// the law's request by the fluid's response time.
+//
+// State: [q (7), q' (7), front axle states (the strut's z_c, F_f as the damper state has them,
+// then the filtered command ū when it lags), rear axle states]. Sizes: 14 for passive axles, up
+// to 20 with two lagged stick/slip struts.
 class HalfCar {
  public:
   HalfCar(const HalfCarTopology& topology, const HalfCarParameters<double>& parameters);
 
   const HalfCarTopology& topology() const { return topology_; }
   const HalfCarParameters<double>& parameters() const { return parameters_; }
-  int state_size() const {
-    return 2 * kHalfCarDofs + topology_.front.internal_state_count() +
-           topology_.rear.internal_state_count();
+  int state_size() const { return 2 * kHalfCarDofs + front_state_count() + rear_state_count(); }
+  // Each axle's own states after the 14 of the masses: the strut's (AxleTopology), then the
+  // filtered command when a semi-active law drives a controlled damper through a lag.
+  int front_state_count() const { return axle_state_count(topology_.front, parameters_.front); }
+  int rear_state_count() const { return axle_state_count(topology_.rear, parameters_.rear); }
+  // The semi-active law drives this axle's damper through its command (HalfCarAxle::commanded).
+  bool follows_command(const HalfCarAxle<double>& axle) const {
+    return topology_.control.law != ControlLaw::kPassive && axle.commanded();
   }
   // True when the model is linear: no Dahl friction (no stick/slip strut), passive damping and
   // symmetric dampers (compression_to_rebound_ratio 1 on both axles; a stick strut's locked
@@ -207,13 +236,21 @@ class HalfCar {
     T friction_N;
     T damping_Ns_per_m;  // the damper's coefficient now (HalfCarOutputs)
     T tyre_N;            // compression positive
+    T friction_level_N;  // the Dahl element's Fc now (the command moves it)
   };
 
+  int axle_state_count(const AxleTopology& topology, const HalfCarAxle<double>& axle) const {
+    return topology.internal_state_count() +
+           (follows_command(axle) && axle.command_lag_s > 0.0 ? 1 : 0);
+  }
+
+  // `values` is the axle's parameters as numbers: they decide which states the axle has.
   template <typename T>
-  AxleForces<T> axle_forces(const AxleTopology& topology, const HalfCarAxle<T>& axle,
-                            const T& travel, const T& travel_rate, const T& body_velocity,
-                            const T& wheel_velocity, const T& wheel, const road::RoadSample& road,
-                            const T* internal, T* internal_rate) const;
+  AxleForces<T> axle_forces(const AxleTopology& topology, const HalfCarAxle<double>& values,
+                            const HalfCarAxle<T>& axle, const T& travel, const T& travel_rate,
+                            const T& body_velocity, const T& wheel_velocity, const T& wheel,
+                            const road::RoadSample& road, const T* internal,
+                            T* internal_rate) const;
 
   HalfCarTopology topology_;
   HalfCarParameters<double> parameters_;
@@ -232,17 +269,32 @@ MassDampingStiffness assemble_mass_damping_stiffness(const HalfCarTopology& topo
 // --- implementation -------------------------------------------------------------------------
 
 template <typename T>
-HalfCar::AxleForces<T> HalfCar::axle_forces(const AxleTopology& topology,
-                                            const HalfCarAxle<T>& axle, const T& travel,
-                                            const T& travel_rate, const T& body_velocity,
-                                            const T& wheel_velocity, const T& wheel,
-                                            const road::RoadSample& road, const T* internal,
-                                            T* internal_rate) const {
+HalfCar::AxleForces<T> HalfCar::axle_forces(
+    const AxleTopology& topology, const HalfCarAxle<double>& values, const HalfCarAxle<T>& axle,
+    const T& travel, const T& travel_rate, const T& body_velocity, const T& wheel_velocity,
+    const T& wheel, const road::RoadSample& road, const T* internal, T* internal_rate) const {
   AxleForces<T> f;
   // The controller sets the rebound coefficient; the damper's compression valve gives
   // compression_to_rebound_ratio times it (SemiActiveControl).
-  const AsymmetricDamper<T> damper =
-      axle.damper(topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m));
+  T rebound = topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m);
+  f.friction_level_N = axle.coulomb_force_N;
+  if (follows_command(values)) {
+    // A controlled damper reaches the law's coefficient through its command (c_b ≠ 0, checked
+    // by the file reader), after the fluid's lag; the friction level moves with the command.
+    const T command = (rebound - axle.damping_Ns_per_m) / axle.damping_per_command_Ns_per_m;
+    T filtered = command;
+    if (values.command_lag_s > 0.0) {
+      const int i = topology.internal_state_count();
+      filtered = internal[i];
+      internal_rate[i] = (command - filtered) / axle.command_lag_s;
+    }
+    const CommandedLevels<T> levels = commanded_levels(axle.damping_Ns_per_m, axle.coulomb_force_N,
+                                                       axle.damping_per_command_Ns_per_m,
+                                                       axle.coulomb_force_per_command_N, filtered);
+    rebound = levels.damping_Ns_per_m;
+    f.friction_level_N = levels.coulomb_force_N;
+  }
+  const AsymmetricDamper<T> damper = axle.damper(rebound);
   f.friction_N = T(0.0);
   T path(0.0);
   if (topology.suspension == AxleSuspension::kPassive) {
@@ -253,6 +305,7 @@ HalfCar::AxleForces<T> HalfCar::axle_forces(const AxleTopology& topology,
   } else {
     StrutDamperPath<T> strut = axle.damper_path();
     strut.damper = damper;
+    strut.friction.coulomb_force_N = f.friction_level_N;
     f.damping_Ns_per_m = damper.rebound_damping_Ns_per_m;
     switch (topology.damper_state) {
       case DamperState::kStick:
@@ -297,22 +350,24 @@ void HalfCar::derivatives(const T* x, const AxleRoads& roads, const HalfCarParam
   for (T& f : force) f = T(0.0);
 
   // Axles: body point z_b + x·θ above the wheel.
-  auto axle = [&](const AxleTopology& top, const HalfCarAxle<T>& ax, const T& arm, int wheel,
-                  const road::RoadSample& road, const T* states, T* rates) {
+  auto axle = [&](const AxleTopology& top, const HalfCarAxle<double>& values,
+                  const HalfCarAxle<T>& ax, const T& arm, int wheel, const road::RoadSample& road,
+                  const T* states, T* rates) {
     const T body = q[kBodyHeave] + arm * q[kBodyPitch];
     const T body_velocity = v[kBodyHeave] + arm * v[kBodyPitch];
     const T travel = body - q[wheel];
     const T travel_rate = body_velocity - v[wheel];
-    const AxleForces<T> f = axle_forces(top, ax, travel, travel_rate, body_velocity, v[wheel],
-                                        q[wheel], road, states, rates);
+    const AxleForces<T> f = axle_forces(top, values, ax, travel, travel_rate, body_velocity,
+                                        v[wheel], q[wheel], road, states, rates);
     force[kBodyHeave] -= f.suspension_N;
     force[kBodyPitch] -= arm * f.suspension_N;
     force[wheel] += f.suspension_N + f.tyre_N;
   };
-  axle(topology_.front, p.front, a1, kFrontWheel, roads.front, internal, internal_rate);
-  const int front_states = topology_.front.internal_state_count();
-  axle(topology_.rear, p.rear, -a2, kRearWheel, roads.rear, internal + front_states,
-       internal_rate + front_states);
+  axle(topology_.front, parameters_.front, p.front, a1, kFrontWheel, roads.front, internal,
+       internal_rate);
+  const int front_states = front_state_count();
+  axle(topology_.rear, parameters_.rear, p.rear, -a2, kRearWheel, roads.rear,
+       internal + front_states, internal_rate + front_states);
 
   // Seat on the body point at a3, body segments on the seat (or chained).
   auto mount = [&](const SuspendedMass<T>& m, int top, const T& bottom, const T& bottom_rate,

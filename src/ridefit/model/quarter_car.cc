@@ -6,8 +6,14 @@
 
 namespace ridefit::model {
 
-QuarterCar::QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters)
-    : state_(state), parameters_(parameters) {}
+QuarterCar::QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters,
+                       DamperCommand command)
+    : state_(state), parameters_(parameters), command_(command) {}
+
+double QuarterCar::command_at(const double* x, const road::RoadSample& road) const {
+  if (command_state()) return x[path_states()];
+  return follows_command() ? road.command : 0.0;
+}
 
 std::string QuarterCar::nonlinearity() const {
   const auto& p = parameters_;
@@ -30,19 +36,33 @@ std::string QuarterCar::nonlinearity() const {
   if (!path.top_mount.linear()) add("the top mount's amplitude stiffening");
   if (p.bump_stop().active()) add("the bump stop");
   if (p.tyre_lift_off) add("tyre lift-off");
+  if (follows_command()) add("the damper's command from the record");
   return reasons;
 }
 
 std::array<const char*, QuarterCar::kMaxStates> QuarterCar::state_names() const {
-  return {"body_displacement", "wheel_displacement", "body_velocity",
-          "wheel_velocity",    "damper_deflection",  "friction_force"};
+  std::array<const char*, kMaxStates> names{"body_displacement",
+                                            "wheel_displacement",
+                                            "body_velocity",
+                                            "wheel_velocity",
+                                            "damper_deflection",
+                                            "friction_force",
+                                            ""};
+  // Stick has no damper deflection, slip no friction force; the command follows the path's states.
+  if (state_ == DamperState::kStick) names[4] = "";
+  if (state_ != DamperState::kStickSlip) names[5] = "";
+  if (command_state()) names[static_cast<std::size_t>(path_states())] = "filtered_command";
+  return names;
 }
 
 QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& road) const {
   double xdot[kMaxStates] = {};
   derivatives(x, road, xdot);
   const auto& p = parameters_;
+  const double command = command_at(x, road);
+  const StrutDamperPath<double> path = p.damper_path(command);
   QuarterCarOutputs out;
+  out.damper_command = command;
   out.road_m = road.elevation_m;
   out.body_acc_m_per_s2 = xdot[2];
   out.wheel_acc_m_per_s2 = xdot[3];
@@ -53,8 +73,7 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
     out.tyre_force_N = lifted_off_tyre_force_N(out.tyre_force_N, p.static_tyre_load_N());
   const double damper_deflection = state_ == DamperState::kStick ? 0.0 : x[4];
   out.top_mount_deflection_m = out.travel_m - damper_deflection;
-  out.damper_force_N =
-      state_ == DamperState::kStick ? 0.0 : p.damper_path().damper.force_N(xdot[4]);
+  out.damper_force_N = state_ == DamperState::kStick ? 0.0 : path.damper.force_N(xdot[4]);
   switch (state_) {
     case DamperState::kSlip:
       out.stuck = 0.0;
@@ -62,13 +81,13 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
     case DamperState::kStick:
       out.stuck = 1.0;
       // The locked damper carries the whole damper-path force.
-      out.friction_force_N = p.damper_path().top_mount.force_N(out.top_mount_deflection_m);
+      out.friction_force_N = path.top_mount.force_N(out.top_mount_deflection_m);
       break;
     case DamperState::kStickSlip:
       out.friction_force_N = x[5];
       // With a Stribeck curve the share is of the level at the damper's rate, Fc(z_c').
-      out.stuck = (p.coulomb_force_N > 0.0 &&
-                   std::abs(x[5]) < kStuckForceShare * p.damper_path().friction.level_N(xdot[4]))
+      out.stuck = (path.friction.coulomb_force_N > 0.0 &&
+                   std::abs(x[5]) < kStuckForceShare * path.friction.level_N(xdot[4]))
                       ? 1.0
                       : 0.0;
       break;

@@ -47,9 +47,9 @@ struct QuarterCarParameters {
   // Stribeck level of the Dahl element, stribeck_curve.h; v_s = 0 off.
   T static_friction_force_N{0.0};
   T stribeck_velocity_m_per_s{0.0};
-  // A controlled damper (strut_test.h): damping and friction level affine in the lagged command.
-  // The road models have no command input yet: on the road the command is 0 (c and Fc above);
-  // the rig tests read it from the record.
+  // A controlled damper (strut_test.h): damping and friction level affine in the lagged command
+  // ū (commanded_levels). On the road the command comes from the record (RoadSample::command) when
+  // the car follows it (DamperCommand::kFromRoad); otherwise it is 0 (c and Fc above).
   T damping_per_command_Ns_per_m{0.0};
   T coulomb_force_per_command_N{0.0};
   T command_lag_s{0.0};
@@ -87,13 +87,31 @@ struct QuarterCarParameters {
   T spring_path_stiffness_N_per_m() const {
     return series_stiffness(spring_stiffness_N_per_m, top_mount_spring_path_stiffness_N_per_m);
   }
-  StrutDamperPath<T> damper_path() const {
+  bool commanded() const {
+    return damping_per_command_Ns_per_m != 0.0 || coulomb_force_per_command_N != 0.0;
+  }
+  bool has_lag() const { return command_lag_s > 0.0; }
+  // The path at a filtered command ū (0 for a passive damper). The command moves the rebound
+  // coefficient and the friction level; the compression ratio, the knee's share and the Stribeck
+  // excess over Fc stay as they are.
+  StrutDamperPath<T> damper_path(const T& command = T(0.0)) const {
+    T c = damping_Ns_per_m;
+    T fc = coulomb_force_N;
+    T above_knee = damping_above_knee_Ns_per_m;
+    if (commanded()) {
+      const CommandedLevels<T> levels =
+          commanded_levels(damping_Ns_per_m, coulomb_force_N, damping_per_command_Ns_per_m,
+                           coulomb_force_per_command_N, command);
+      if (damper_knee_velocity_m_per_s > 0.0)
+        above_knee = above_knee * (levels.damping_Ns_per_m / c);
+      c = levels.damping_Ns_per_m;
+      fc = levels.coulomb_force_N;
+    }
     return {{top_mount_stiffness_N_per_m, top_mount_small_amplitude_stiffness_N_per_m,
              top_mount_transition_deflection_m},
-            {damping_Ns_per_m, compression_to_rebound_ratio, damper_knee_velocity_m_per_s,
-             damping_above_knee_Ns_per_m},
-            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent, static_friction_force_N,
-             stribeck_velocity_m_per_s}};
+            {c, compression_to_rebound_ratio, damper_knee_velocity_m_per_s, above_knee},
+            {dahl_sigma0_N_per_m, fc, dahl_exponent,
+             static_friction_force_N + (fc - coulomb_force_N), stribeck_velocity_m_per_s}};
   }
   BumpStop<T> bump_stop() const {
     return {bump_stop_stiffness_N_per_m, bump_stop_clearance_m, bump_stop_exponent};
@@ -116,7 +134,12 @@ struct QuarterCarOutputs {
   double friction_force_N = 0;        // Dahl friction F_f
   double top_mount_deflection_m = 0;  // damper path top mount, z − z_c
   double stuck = 0;                   // 1 while the damper sticks (rule in QuarterCar)
+  double damper_command = 0;          // the filtered command ū the damper follows (A or V)
 };
+
+// Where a controlled damper's command comes from: nowhere (ū = 0, the damper at its base levels
+// c and Fc), or the road's record (RoadSample::command), through the lag when command_lag_s > 0.
+enum class DamperCommand { kNone, kFromRoad };
 
 // Quarter car of a MacPherson strut (seed 000, Figure 7 and Equations 9–11).
 //
@@ -144,20 +167,36 @@ struct QuarterCarOutputs {
 //     static load (ms + mu)·g, so the total wheel load never goes below zero;
 //   - a blow-off knee in the damper law, and a Stribeck level in the Dahl element.
 //
+// A controlled damper following the road's command (DamperCommand::kFromRoad, with
+// damping_per_command_Ns_per_m or coulomb_force_per_command_N non-zero): the damper's levels are
+// commanded_levels at the filtered command ū; with command_lag_s τ > 0, ū is one more state, the
+// last, with ū' = (u − ū)/τ (u the record's command); with τ = 0, ū = u.
+//
 // Stuck rule (the `stuck` output): in stick/slip the damper counts as stuck while the
 // Dahl element is on its pre-sliding branch, |F_f| < 0.95·Fc (gross sliding drives |F_f|
 // to Fc; at 0.95·Fc and d = 1 the element has slid 3·Fc/σ0 since the last reversal).
 // The stick topology is always stuck, the slip topology never.
 class QuarterCar {
  public:
-  static constexpr int kMaxStates = 6;
+  static constexpr int kMaxStates = 7;
   static constexpr double kStuckForceShare = 0.95;
 
-  QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters);
+  QuarterCar(DamperState state, const QuarterCarParameters<double>& parameters,
+             DamperCommand command = DamperCommand::kNone);
 
   DamperState damper_state() const { return state_; }
   const QuarterCarParameters<double>& parameters() const { return parameters_; }
-  int state_size() const { return 4 + StrutDamperPath<double>::state_count(state_); }
+  DamperCommand command_input() const { return command_; }
+  // True when the damper's levels follow the road's command (a controlled damper, kFromRoad).
+  bool follows_command() const {
+    return command_ == DamperCommand::kFromRoad && parameters_.commanded();
+  }
+  // The same car with its command from the road when `road_has_command`, else none.
+  QuarterCar with_command_from_road(bool road_has_command) const {
+    return {state_, parameters_,
+            road_has_command ? DamperCommand::kFromRoad : DamperCommand::kNone};
+  }
+  int state_size() const { return path_states() + (command_state() ? 1 : 0); }
   // True for the linear models: stick (the locked damper never moves, so its split does not
   // act), and slip with a symmetric damper (compression_to_rebound_ratio 1) without a knee.
   // Stick/slip has Dahl friction and is never linear. A bump stop, tyre lift-off or a top mount
@@ -178,7 +217,15 @@ class QuarterCar {
     const T& vs = x[2];
     const T& vu = x[3];
     const T travel = zs - zu;
-    const StrutDamperPath<T> path = p.damper_path();
+    T command(0.0);
+    if (command_state()) {
+      const int i = path_states();
+      command = x[i];
+      xdot[i] = (T(road.command) - command) / p.command_lag_s;
+    } else if (follows_command()) {
+      command = T(road.command);
+    }
+    const StrutDamperPath<T> path = p.damper_path(command);
     T path_force(0.0);
     switch (state_) {
       case DamperState::kStick:
@@ -215,10 +262,19 @@ class QuarterCar {
 
   // All output channels at one state.
   QuarterCarOutputs outputs(const double* x, const road::RoadSample& road) const;
+  // The filtered command ū the damper follows at this state and road sample (0 when it follows
+  // none).
+  double command_at(const double* x, const road::RoadSample& road) const;
+  // The index of the filtered command among the states, or -1 when it is not a state.
+  int command_state_index() const { return command_state() ? path_states() : -1; }
 
  private:
+  int path_states() const { return 4 + StrutDamperPath<double>::state_count(state_); }
+  // The filtered command is a state (the last) when the car follows a lagged command.
+  bool command_state() const { return follows_command() && parameters_.has_lag(); }
   DamperState state_;
   QuarterCarParameters<double> parameters_;
+  DamperCommand command_ = DamperCommand::kNone;
 };
 
 // "slip" | "stick" | "stick_slip" and back.

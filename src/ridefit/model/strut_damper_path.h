@@ -61,4 +61,25 @@ struct StrutDamperPath {
   }
 };
 
+// A controlled (semi-active) damper's levels at the filtered command ū: damping and friction
+// level affine in it, c = c_a + c_b·ū and Fc = Fc_a + Fc_b·ū. The damping is kept at least 1 % of
+// c_a and the friction level at least 0, so that a fit exploring a steep negative slope (or a
+// command beyond the data sheet's range) cannot make the damper's law singular.
+template <typename T>
+struct CommandedLevels {
+  T damping_Ns_per_m;
+  T coulomb_force_N;
+};
+
+template <typename T>
+CommandedLevels<T> commanded_levels(const T& damping_Ns_per_m, const T& coulomb_force_N,
+                                    const T& damping_per_command_Ns_per_m,
+                                    const T& coulomb_force_per_command_N, const T& command) {
+  T c = damping_Ns_per_m + damping_per_command_Ns_per_m * command;
+  if (c < 0.01 * damping_Ns_per_m) c = T(0.01) * damping_Ns_per_m;
+  T fc = coulomb_force_N + coulomb_force_per_command_N * command;
+  if (fc < 0.0) fc = T(0.0);
+  return {c, fc};
+}
+
 }  // namespace ridefit::model

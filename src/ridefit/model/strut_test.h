@@ -40,17 +40,16 @@ struct StrutTestParameters {
   }
   bool has_lag() const { return command_lag_s > 0.0; }
 
-  // The path at a filtered command ū (ū = 0 for a passive damper). The damping is kept at least
-  // 1 % of its passive value and the friction level at least 0 so that a fit exploring a steep
-  // negative slope cannot make the damper's law singular.
+  // The path at a filtered command ū (ū = 0 for a passive damper; limits in commanded_levels).
   StrutDamperPath<T> damper_path(const T& command = T(0.0)) const {
     T c = damping_Ns_per_m;
     T fc = coulomb_force_N;
     if (commanded()) {
-      c = c + damping_per_command_Ns_per_m * command;
-      if (c < 0.01 * damping_Ns_per_m) c = T(0.01) * damping_Ns_per_m;
-      fc = fc + coulomb_force_per_command_N * command;
-      if (fc < 0.0) fc = T(0.0);
+      const CommandedLevels<T> levels =
+          commanded_levels(damping_Ns_per_m, coulomb_force_N, damping_per_command_Ns_per_m,
+                           coulomb_force_per_command_N, command);
+      c = levels.damping_Ns_per_m;
+      fc = levels.coulomb_force_N;
     }
     return {{top_mount_stiffness_N_per_m},
             {c, T(1.0)},

@@ -2,10 +2,13 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/road/resample.h"
@@ -63,8 +66,34 @@ UniformSpline MeasuredRoad::make_signal(std::span<const double> time_s,
 MeasuredRoad::MeasuredRoad(std::span<const double> time_s, std::span<const double> elevation_m)
     : signal_(make_signal(time_s, elevation_m)), start_time_s_(time_s.front()) {}
 
+MeasuredRoad::MeasuredRoad(std::span<const double> time_s, std::span<const double> elevation_m,
+                           std::span<const double> command, std::string command_unit)
+    : MeasuredRoad(time_s, elevation_m) {
+  command_unit_ = std::move(command_unit);
+  if (command.size() != time_s.size()) {
+    throw InputError(
+        fmt::format("a measured command needs one value per time sample, got {} for {}",
+                    command.size(), time_s.size()));
+  }
+  for (std::size_t k = 0; k < command.size(); ++k) {
+    if (!std::isfinite(command[k])) {
+      throw InputError(
+          fmt::format("measured command sample {}: {} is not a finite number", k, command[k]));
+    }
+  }
+  command_ = resample_uniform(time_s, command).values;
+}
+
 RoadSample MeasuredRoad::at(double time_s) const {
-  return {signal_.value(time_s), signal_.derivative(time_s)};
+  RoadSample sample{signal_.value(time_s), signal_.derivative(time_s)};
+  if (!command_.empty()) {
+    const double position =
+        std::clamp(time_s / signal_.step(), 0.0, static_cast<double>(command_.size() - 1));
+    const auto k = std::min(static_cast<std::size_t>(position), command_.size() - 2);
+    const double share = position - static_cast<double>(k);
+    sample.command = (1.0 - share) * command_[k] + share * command_[k + 1];
+  }
+  return sample;
 }
 
 MeasuredRoad load_measured_road(const std::filesystem::path& csv_file, const std::string& channel) {
@@ -84,6 +113,9 @@ MeasuredRoad load_measured_road(const std::filesystem::path& csv_file, const std
                                  csv_file.string(), table.rows(), kMinimumSamples));
   }
   try {
+    if (auto command = io::read_command_column(table, csv_file.string())) {
+      return MeasuredRoad(time, road.values, command->values, command->unit);
+    }
     return MeasuredRoad(time, road.values);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", csv_file.string(), e.what()));

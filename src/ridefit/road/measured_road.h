@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "ridefit/road/road_input.h"
 #include "ridefit/road/uniform_spline.h"
@@ -22,11 +23,17 @@ class MeasuredRoad : public RoadInput {
   // At least 5 samples with strictly increasing time over at least 1 ms, elevations within
   // ±10 km, at most 2e7 samples after resampling (road_limits.h); else InputError.
   MeasuredRoad(std::span<const double> time_s, std::span<const double> elevation_m);
+  // With a controlled damper's command u(t) (A or V) on the same time base, interpolated linearly
+  // between the (resampled) samples and held at its ends; RoadSample::command then carries it.
+  MeasuredRoad(std::span<const double> time_s, std::span<const double> elevation_m,
+               std::span<const double> command, std::string command_unit);
 
   RoadSample at(double time_s) const override;
   double duration_s() const override { return signal_.end(); }
   // The (resampled) time step.
   double max_step_s() const override { return signal_.step(); }
+  bool has_command() const override { return !command_.empty(); }
+  std::string command_unit() const override { return command_unit_; }
 
   // The recording's time of the first sample (at(0)).
   double start_time_s() const { return start_time_s_; }
@@ -36,9 +43,12 @@ class MeasuredRoad : public RoadInput {
                                    std::span<const double> elevation_m);
   UniformSpline signal_;
   double start_time_s_;
+  std::vector<double> command_;  // on the signal's uniform grid; empty without a command
+  std::string command_unit_;
 };
 
-// The channel `channel` (in m or mm) of a CSV with a strictly increasing `time` column.
+// The channel `channel` (in m or mm) of a CSV with a strictly increasing `time` column, with the
+// damper command when the CSV has a `current` or `voltage` column (io/command_column.h).
 MeasuredRoad load_measured_road(const std::filesystem::path& csv_file,
                                 const std::string& channel = "road");
 

@@ -1,13 +1,17 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 namespace ridefit::road {
 
 // Road elevation under one tyre and its rate, at a time.
+// A record may also carry the command of a controlled damper (its coil current in A or valve
+// voltage in V), which a car that follows it reads here; 0 where there is none.
 struct RoadSample {
   double elevation_m = 0.0;
   double rate_m_per_s = 0.0;
+  double command = 0.0;
 };
 
 // The road as one tyre sees it over time: h(t) and dh/dt, continuous in both, so that an
@@ -26,6 +30,11 @@ class RoadInput {
   // The driving speed of a road driven over a profile; empty for roads given over time (a
   // sweep on a rig, a measured record), where a rear wheel's delay must come from elsewhere.
   virtual std::optional<double> speed_m_per_s() const { return std::nullopt; }
+  // True when the samples carry a damper command (a measured record with a current or voltage
+  // column).
+  virtual bool has_command() const { return false; }
+  // The command's unit, "A" or "V" ("" without a command).
+  virtual std::string command_unit() const { return ""; }
 };
 
 }  // namespace ridefit::road

@@ -14,7 +14,7 @@
 namespace ridefit::simulate {
 namespace {
 
-constexpr int kMaxStates = 2 * model::kHalfCarDofs + 4;
+constexpr int kMaxStates = 2 * model::kHalfCarDofs + 6;
 
 }  // namespace
 
@@ -65,6 +65,7 @@ HalfCarSystem::HalfCarSystem(const model::HalfCar& car, const AxleRoadInput& roa
       switches_.push_back({-1, arm, wheel});
     }
     internal += top.internal_state_count();
+    if (car.follows_command(axle) && axle.command_lag_s > 0.0) ++internal;
   };
   add(car.topology().front, p.front, p.front_axle_distance_m, model::kFrontWheel);
   add(car.topology().rear, p.rear, -p.rear_axle_distance_m, model::kRearWheel);
@@ -108,9 +109,11 @@ double HalfCarSystem::typical_magnitude(int state_index) const {
   if (state_index < model::kHalfCarDofs) return 1e-3;
   if (state_index < 2 * model::kHalfCarDofs) return 1e-2;
   const int internal = state_index - 2 * model::kHalfCarDofs;
-  const int front = car_.topology().front.internal_state_count();
+  const int front = car_.front_state_count();
   const bool is_front = internal < front;
   const int index = is_front ? internal : internal - front;
+  const auto& topology = is_front ? car_.topology().front : car_.topology().rear;
+  if (index == topology.internal_state_count()) return 0.1;  // a filtered command, A or V
   if (index == 0) return 1e-4;
   const auto& axle = is_front ? car_.parameters().front : car_.parameters().rear;
   return std::max(1.0, axle.coulomb_force_N);

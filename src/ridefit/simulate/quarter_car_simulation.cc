@@ -34,6 +34,7 @@ QuarterCarResponse simulate(const model::QuarterCar& car, const road::RoadInput&
     response.friction_force_N.push_back(out.friction_force_N);
     response.top_mount_deflection_m.push_back(out.top_mount_deflection_m);
     response.stuck.push_back(out.stuck);
+    if (car.follows_command()) response.damper_command.push_back(out.damper_command);
   }
   return response;
 }

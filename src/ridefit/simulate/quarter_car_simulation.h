@@ -21,6 +21,9 @@ struct QuarterCarResponse {
   std::vector<double> friction_force_N;
   std::vector<double> top_mount_deflection_m;
   std::vector<double> stuck;
+  // The filtered command ū the damper followed (the road's unit); empty unless the car follows a
+  // command (QuarterCar::follows_command).
+  std::vector<double> damper_command;
   SolverStatistics statistics;
 };
 

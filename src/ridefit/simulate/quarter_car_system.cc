@@ -45,7 +45,7 @@ road::RoadSample QuarterCarSystem::road_at(double t_s) const {
 
 void QuarterCarSystem::switching(double t_s, const double* x, double* g) const {
   const auto& p = car_.parameters();
-  const auto path = p.damper_path();
+  const auto path = p.damper_path(car_.command_at(x, road_at(t_s)));
   const double travel = x[0] - x[1];
   double rate = 0.0;
   if (car_.damper_state() != model::DamperState::kStick) {
@@ -95,7 +95,8 @@ bool QuarterCarSystem::jacobian(double t_s, const double* x, double* jacobian_co
 
 double QuarterCarSystem::typical_magnitude(int state_index) const {
   // Positions ~1 mm, velocities ~10 mm/s; the damper deflection is often µm in stick;
-  // the friction force is judged against Fc.
+  // the friction force is judged against Fc; a filtered command (A or V) against 0.1.
+  if (state_index == car_.command_state_index()) return 0.1;
   switch (state_index) {
     case 0:
     case 1:

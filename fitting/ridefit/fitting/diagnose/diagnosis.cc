@@ -161,6 +161,7 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   selection_options.refine = final_fit.relative_tolerance != screening.relative_tolerance;
   DiagnosisModel start = baseline;
   start.kind = DataKind::kVehicleSpectra;
+  start.has_command = data.training.road != nullptr && data.training.road->has_command();
   const Selection selection = select_effects(
       start, options.baseline_free.empty() ? default_free(baseline.car) : options.baseline_free,
       options.fit.bounds, effects_to_try(options.effects), fit, selection_options, say);

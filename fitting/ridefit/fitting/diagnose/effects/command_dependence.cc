@@ -16,16 +16,17 @@ class CommandDependence : public Effect {
            "Fc_b·ū, ū' = (u − ū)/τ";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
-    if (baseline.kind != DataKind::kStrutLoops) {
-      return "for rig records with a command column: the road models have no command input yet";
-    }
     if (!baseline.has_command) {
       return "the records have no command column (current[A] or voltage[V])";
     }
-    if (baseline.strut.commanded()) return "the baseline already follows the command";
+    const bool commanded = baseline.kind == DataKind::kStrutLoops
+                               ? baseline.strut.commanded()
+                               : baseline.car.parameters().commanded();
+    if (commanded) return "the baseline already follows the command";
     return "";
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kVehicleSpectra) return vehicle_change(baseline);
     // Slopes start at a small share of the passive levels per unit command; friction needs a
     // Dahl element, which the change adds when the baseline has none (σ0 from the baseline or
     // far above the top mount).
@@ -41,6 +42,26 @@ class CommandDependence : public Effect {
                          {"coulomb_force_per_command_N", -1e4, 1e4},
                          {"command_lag_s", 1e-4, 0.5}},
                         {{{"command_lag_s", 0.002}}, {{"command_lag_s", 0.05}}}};
+    return change;
+  }
+
+ private:
+  // On vehicle spectra the damping's slope is what the accelerations show; the friction level's
+  // slope only where the baseline's damper has Dahl friction (stick/slip with Fc > 0). The lag
+  // stays fixed at a typical fluid response (10 ms): at road frequencies below 25 Hz it shifts
+  // the damping's timing by less than 2 % of a period, which the spectra cannot resolve, and a
+  // free lag would wander along a flat cost.
+  static EffectChange vehicle_change(const DiagnosisModel& baseline) {
+    const auto& p = baseline.car.parameters();
+    EffectChange change{
+        {{"damping_per_command_Ns_per_m", 0.3 * p.damping_Ns_per_m}, {"command_lag_s", 0.01}},
+        {},
+        {{"damping_per_command_Ns_per_m", -1e5, 1e6}},
+        {{{"damping_per_command_Ns_per_m", 1.0 * p.damping_Ns_per_m}}}};
+    if (baseline.car.damper_state() == model::DamperState::kStickSlip && p.coulomb_force_N > 0.0) {
+      change.set["coulomb_force_per_command_N"] = 0.0;
+      change.free.push_back({"coulomb_force_per_command_N", -1e4, 1e4});
+    }
     return change;
   }
 };
