@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "ridefit/io/input_error.h"
@@ -75,7 +76,10 @@ TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 560000.0);
 // control, not the tangent), both parameters, every bin. (The Coulomb-force column is the one
 // that caught signed_power dropping the tangent at s = 0, where a sliding Dahl element sits;
 // scalar_math.h.)
-void check_gradient(const std::optional<double>& noise_psd) {
+void check_gradient(const std::optional<double>& noise_psd,
+                    const model::AccelerationSensors<double>& sensors = {},
+                    std::vector<std::string> free = {"top_mount_stiffness_N_per_m",
+                                                     "coulomb_force_N"}) {
   auto m = measure(488000.0);
   m.time_s.resize(10001);  // 10 s are enough for the check
   m.body_acc_m_per_s2.resize(10001);
@@ -83,9 +87,10 @@ void check_gradient(const std::optional<double>& noise_psd) {
   auto at = testing::passat_corner().parameters;
   at.top_mount_stiffness_N_per_m *= 1.1;  // off the truth, so residuals are not zero
   at.coulomb_force_N *= 0.9;
+  at.sensors = sensors;
   const model::QuarterCar car(model::DamperState::kStickSlip, at);
   PsdFitOptions options;
-  options.free = {"top_mount_stiffness_N_per_m", "coulomb_force_N"};
+  options.free = free;
   options.segment_s = 2.0;
   options.body_noise_psd = noise_psd;
   options.wheel_noise_psd = noise_psd;
@@ -93,11 +98,17 @@ void check_gradient(const std::optional<double>& noise_psd) {
       car, *m.road, m.time_s, {.relative_tolerance = options.relative_tolerance});
   options.frozen_steps = &steps;
   std::unique_ptr<ceres::CostFunction> cost(make_psd_cost(m, car, options));
-  double x[2] = {1.0, 1.0};
-  const double* blocks[2] = {&x[0], &x[1]};
+  const std::size_t n = free.size();
+  std::vector<double> x(n, 1.0);
+  std::vector<const double*> block_pointers;
+  for (const double& v : x) block_pointers.push_back(&v);
+  const double* const* blocks = block_pointers.data();
   const auto rows = static_cast<std::size_t>(cost->num_residuals());
-  std::vector<double> residuals(rows), j0(rows), j1(rows);
-  double* jacobians[2] = {j0.data(), j1.data()};
+  std::vector<double> residuals(rows);
+  std::vector<std::vector<double>> exact_columns(n, std::vector<double>(rows));
+  std::vector<double*> jacobian_pointers;
+  for (auto& column : exact_columns) jacobian_pointers.push_back(column.data());
+  double** jacobians = jacobian_pointers.data();
   ASSERT_TRUE(cost->Evaluate(blocks, residuals.data(), jacobians));
   if (noise_psd && *noise_psd > 0.0) {
     // The floor must matter here: residuals move by more than 0.1 (10 %) in some bins.
@@ -110,7 +121,7 @@ void check_gradient(const std::optional<double>& noise_psd) {
     for (std::size_t r = 0; r < rows; ++r) moved = std::max(moved, std::abs(residuals[r] - r0[r]));
     EXPECT_GT(moved, 0.1);
   }
-  for (int p = 0; p < 2; ++p) {
+  for (std::size_t p = 0; p < n; ++p) {
     const double saved = x[p], step = 1e-6;
     std::vector<double> up(rows), down(rows);
     x[p] = saved + step;
@@ -118,14 +129,14 @@ void check_gradient(const std::optional<double>& noise_psd) {
     x[p] = saved - step;
     ASSERT_TRUE(cost->Evaluate(blocks, down.data(), nullptr));
     x[p] = saved;
-    const auto& exact = p == 0 ? j0 : j1;
+    const auto& exact = exact_columns[p];
     double scale = 0.0, worst = 0.0;
     for (std::size_t r = 0; r < rows; ++r) {
       scale = std::max(scale, std::abs(exact[r]));
       worst = std::max(worst, std::abs((up[r] - down[r]) / (2.0 * step) - exact[r]));
     }
     EXPECT_GT(scale, 0.0);
-    EXPECT_LT(worst, 1e-4 * scale) << options.free[static_cast<std::size_t>(p)];
+    EXPECT_LT(worst, 1e-4 * scale) << options.free[p];
   }
 }
 
@@ -135,6 +146,23 @@ TEST(PsdFit, GradientCheckAgainstCentralDifferences) { check_gradient(0.0); }
 // dP·(1 + 2·b·q·(1 − q))/(P + N). 1e-4 (m/s²)²/Hz lies inside the band's levels (checked: it
 // moves some residuals by more than 0.1), so the check covers bins where the floor matters.
 TEST(PsdFit, GradientCheckWithANoiseFloor) { check_gradient(1e-4); }
+
+// The accelerometers' chain (model/acceleration_sensors.h) on the simulated PSDs, c·P + N with
+// c = g²·|H(f)|²: its gains and cutoff are parameters too, d(c·P) = dc·P + c·dP, checked with a
+// physical parameter and the floor, for a first-order and a two-stage low-pass (cutoff inside
+// the band, so every column moves the residuals).
+TEST(PsdFit, GradientCheckWithTheAccelerometerChain) {
+  model::AccelerationSensors<double> sensors;
+  sensors.body_acc_gain = 0.9;
+  sensors.wheel_acc_gain = 1.1;
+  sensors.acc_sensor_cutoff_Hz = 15.0;
+  for (int order : {1, 2}) {
+    sensors.acc_sensor_order = order;
+    check_gradient(
+        1e-4, sensors,
+        {"top_mount_stiffness_N_per_m", "body_acc_gain", "wheel_acc_gain", "acc_sensor_cutoff_Hz"});
+  }
+}
 
 // Gaussian white noise of `fraction` times each channel's RMS (seeded); returns the noise's
 // one-sided PSD levels 2σ²/fs.
