@@ -13,6 +13,7 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "ridefit/io/input_error.h"
@@ -78,7 +79,11 @@ TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 560000.0);
 // scalar_math.h.)
 // With `commanded`, the record carries a coil current (1 + 0.8·sin(2π·0.7·t) A) that a controlled
 // damper follows through its lag, and the columns are the damping's slope and the lag.
-void check_gradient(const std::optional<double>& noise_psd, bool commanded = false) {
+void check_gradient(const std::optional<double>& noise_psd,
+                    const model::AccelerationSensors<double>& sensors = {},
+                    std::vector<std::string> free = {"top_mount_stiffness_N_per_m",
+                                                     "coulomb_force_N"},
+                    bool commanded = false) {
   auto m = measure(488000.0);
   m.time_s.resize(10001);  // 10 s are enough for the check
   m.body_acc_m_per_s2.resize(10001);
@@ -86,8 +91,9 @@ void check_gradient(const std::optional<double>& noise_psd, bool commanded = fal
   auto at = testing::passat_corner().parameters;
   at.top_mount_stiffness_N_per_m *= 1.1;  // off the truth, so residuals are not zero
   at.coulomb_force_N *= 0.9;
+  at.sensors = sensors;
   PsdFitOptions options;
-  options.free = {"top_mount_stiffness_N_per_m", "coulomb_force_N"};
+  options.free = free;
   if (commanded) {
     const auto& road = dynamic_cast<const road::MeasuredRoad&>(*m.road);
     std::vector<double> elevation, current;
@@ -98,7 +104,6 @@ void check_gradient(const std::optional<double>& noise_psd, bool commanded = fal
     m.road = std::make_shared<road::MeasuredRoad>(m.time_s, elevation, current, "A");
     at.damping_per_command_Ns_per_m = 300.0;
     at.command_lag_s = 0.02;
-    options.free = {"damping_per_command_Ns_per_m", "command_lag_s"};
   }
   const model::QuarterCar car =
       model::QuarterCar(model::DamperState::kStickSlip, at).with_command_from_road(commanded);
@@ -109,11 +114,17 @@ void check_gradient(const std::optional<double>& noise_psd, bool commanded = fal
       car, *m.road, m.time_s, {.relative_tolerance = options.relative_tolerance});
   options.frozen_steps = &steps;
   std::unique_ptr<ceres::CostFunction> cost(make_psd_cost(m, car, options));
-  double x[2] = {1.0, 1.0};
-  const double* blocks[2] = {&x[0], &x[1]};
+  const std::size_t n = free.size();
+  std::vector<double> x(n, 1.0);
+  std::vector<const double*> block_pointers;
+  for (const double& v : x) block_pointers.push_back(&v);
+  const double* const* blocks = block_pointers.data();
   const auto rows = static_cast<std::size_t>(cost->num_residuals());
-  std::vector<double> residuals(rows), j0(rows), j1(rows);
-  double* jacobians[2] = {j0.data(), j1.data()};
+  std::vector<double> residuals(rows);
+  std::vector<std::vector<double>> exact_columns(n, std::vector<double>(rows));
+  std::vector<double*> jacobian_pointers;
+  for (auto& column : exact_columns) jacobian_pointers.push_back(column.data());
+  double** jacobians = jacobian_pointers.data();
   ASSERT_TRUE(cost->Evaluate(blocks, residuals.data(), jacobians));
   if (noise_psd && *noise_psd > 0.0) {
     // The floor must matter here: residuals move by more than 0.1 (10 %) in some bins.
@@ -126,7 +137,7 @@ void check_gradient(const std::optional<double>& noise_psd, bool commanded = fal
     for (std::size_t r = 0; r < rows; ++r) moved = std::max(moved, std::abs(residuals[r] - r0[r]));
     EXPECT_GT(moved, 0.1);
   }
-  for (int p = 0; p < 2; ++p) {
+  for (std::size_t p = 0; p < n; ++p) {
     const double saved = x[p], step = 1e-6;
     std::vector<double> up(rows), down(rows);
     x[p] = saved + step;
@@ -134,26 +145,45 @@ void check_gradient(const std::optional<double>& noise_psd, bool commanded = fal
     x[p] = saved - step;
     ASSERT_TRUE(cost->Evaluate(blocks, down.data(), nullptr));
     x[p] = saved;
-    const auto& exact = p == 0 ? j0 : j1;
+    const auto& exact = exact_columns[p];
     double scale = 0.0, worst = 0.0;
     for (std::size_t r = 0; r < rows; ++r) {
       scale = std::max(scale, std::abs(exact[r]));
       worst = std::max(worst, std::abs((up[r] - down[r]) / (2.0 * step) - exact[r]));
     }
     EXPECT_GT(scale, 0.0);
-    EXPECT_LT(worst, 1e-4 * scale) << options.free[static_cast<std::size_t>(p)];
+    EXPECT_LT(worst, 1e-4 * scale) << options.free[p];
   }
 }
 
 TEST(PsdFit, GradientCheckAgainstCentralDifferences) { check_gradient(0.0); }
 
 // The damping's command slope and the command's lag, through the filtered-command state.
-TEST(PsdFit, GradientCheckForAControlledDamperFollowingTheRecord) { check_gradient(0.0, true); }
+TEST(PsdFit, GradientCheckForAControlledDamperFollowingTheRecord) {
+  check_gradient(0.0, {}, {"damping_per_command_Ns_per_m", "command_lag_s"}, true);
+}
 
 // With a floor N, the residual is ln(P + N) − b·q·(2 − q) − ln P_meas and its derivative
 // dP·(1 + 2·b·q·(1 − q))/(P + N). 1e-4 (m/s²)²/Hz lies inside the band's levels (checked: it
 // moves some residuals by more than 0.1), so the check covers bins where the floor matters.
 TEST(PsdFit, GradientCheckWithANoiseFloor) { check_gradient(1e-4); }
+
+// The accelerometers' chain (model/acceleration_sensors.h) on the simulated PSDs, c·P + N with
+// c = g²·|H(f)|²: its gains and cutoff are parameters too, d(c·P) = dc·P + c·dP, checked with a
+// physical parameter and the floor, for a first-order and a two-stage low-pass (cutoff inside
+// the band, so every column moves the residuals).
+TEST(PsdFit, GradientCheckWithTheAccelerometerChain) {
+  model::AccelerationSensors<double> sensors;
+  sensors.body_acc_gain = 0.9;
+  sensors.wheel_acc_gain = 1.1;
+  sensors.acc_sensor_cutoff_Hz = 15.0;
+  for (int order : {1, 2}) {
+    sensors.acc_sensor_order = order;
+    check_gradient(
+        1e-4, sensors,
+        {"top_mount_stiffness_N_per_m", "body_acc_gain", "wheel_acc_gain", "acc_sensor_cutoff_Hz"});
+  }
+}
 
 // Gaussian white noise of `fraction` times each channel's RMS (seeded); returns the noise's
 // one-sided PSD levels 2σ²/fs.

@@ -188,6 +188,10 @@ std::vector<std::pair<std::string, std::string>> changed_keys(const model::Quart
   if (before.parameters().tyre_lift_off != after.parameters().tyre_lift_off) {
     values.emplace_back("tyre_lift_off", after.parameters().tyre_lift_off ? "true" : "false");
   }
+  if (before.parameters().sensors.acc_sensor_order != after.parameters().sensors.acc_sensor_order) {
+    values.emplace_back("acc_sensor_order",
+                        std::to_string(after.parameters().sensors.acc_sensor_order));
+  }
   return values;
 }
 

@@ -53,6 +53,10 @@ struct WelchBins {
   std::vector<double> window;
   double sample_rate_Hz = 0.0;
 
+  double frequency_Hz(std::size_t b) const {
+    return static_cast<double>(bins[b]) * sample_rate_Hz / static_cast<double>(length);
+  }
+
   void evaluate(const std::vector<double>& x, const std::vector<std::vector<double>>& tangents,
                 std::vector<double>& psd, std::vector<std::vector<double>>& dpsd) const {
     Eigen::FFT<double> fft;
@@ -90,6 +94,12 @@ struct WelchBins {
     }
   }
 };
+
+// The factor the accelerometer's chain puts on a channel's simulated PSD at `frequency_Hz`.
+double chain_power(const model::AccelerationSensors<double>& sensors, bool body,
+                   double frequency_Hz) {
+  return body ? sensors.body_power_gain(frequency_Hz) : sensors.wheel_power_gain(frequency_Hz);
+}
 
 // One bin's residual against the measured log-PSD, with the sensor-noise floor N: the model
 // as the sensor shows it, P + N, and the expected log of that noisy estimate. The measured
@@ -152,7 +162,7 @@ class PsdCost : public ceres::CostFunction {
     if (!series) return false;
     std::size_t row = 0;
     auto channel = [&](const std::vector<Jet>& acc, const std::vector<double>& measured_log,
-                       double noise_psd) {
+                       double noise_psd, bool body) {
       if (measured_log.empty()) return true;
       std::vector<double> x(acc.size());
       std::vector<std::vector<double>> tangents(fields_.size(), std::vector<double>(acc.size()));
@@ -166,20 +176,25 @@ class PsdCost : public ceres::CostFunction {
       std::vector<std::vector<double>> dpsd;
       welch_.evaluate(x, tangents, psd, dpsd);
       for (std::size_t b = 0; b < psd.size(); ++b, ++row) {
-        // The model as the sensor would show it: its PSD plus the noise floor.
-        if (!(psd[b] + noise_psd > 0.0)) return false;
-        const BinResidual r = bin_residual(psd[b], noise_psd, log_bias_, measured_log[b]);
+        // The model as the sensor would show it: its PSD through the accelerometer's chain
+        // (c = g²·|H(f)|², acceleration_sensors.h), plus the noise floor. d(c·P) = dc·P + c·dP.
+        const double f = welch_.frequency_Hz(b);
+        const Jet c = body ? jets.sensors.body_power_gain(f) : jets.sensors.wheel_power_gain(f);
+        const double shown = c.a * psd[b];
+        if (!(shown + noise_psd > 0.0)) return false;
+        const BinResidual r = bin_residual(shown, noise_psd, log_bias_, measured_log[b]);
         residuals[row] = r.value;
         if (jacobians) {
           for (std::size_t j = 0; j < fields_.size(); ++j) {
-            if (jacobians[j]) jacobians[j][row] = dpsd[j][b] * r.slope;
+            const double dc = c.v[static_cast<Eigen::Index>(j)];
+            if (jacobians[j]) jacobians[j][row] = (dc * psd[b] + c.a * dpsd[j][b]) * r.slope;
           }
         }
       }
       return true;
     };
-    return channel(series->body, body_log_, noise_.body_psd) &&
-           channel(series->wheel, wheel_log_, noise_.wheel_psd);
+    return channel(series->body, body_log_, noise_.body_psd, true) &&
+           channel(series->wheel, wheel_log_, noise_.wheel_psd, false);
   }
 
  private:
@@ -190,16 +205,17 @@ class PsdCost : public ceres::CostFunction {
         simulate::quarter_car_accelerations<double>(car, p, *m_.road, m_.time_s, solver_);
     if (!series) return false;
     std::size_t row = 0;
-    for (const auto& [acc, measured_log, noise_psd] :
-         {std::tuple{&series->body, &body_log_, noise_.body_psd},
-          std::tuple{&series->wheel, &wheel_log_, noise_.wheel_psd}}) {
+    for (const auto& [acc, measured_log, noise_psd, body] :
+         {std::tuple{&series->body, &body_log_, noise_.body_psd, true},
+          std::tuple{&series->wheel, &wheel_log_, noise_.wheel_psd, false}}) {
       if (measured_log->empty()) continue;
       std::vector<double> psd;
       std::vector<std::vector<double>> none;
       welch_.evaluate(*acc, {}, psd, none);
       for (std::size_t b = 0; b < psd.size(); ++b, ++row) {
-        if (!(psd[b] + noise_psd > 0.0)) return false;
-        residuals[row] = bin_residual(psd[b], noise_psd, log_bias_, (*measured_log)[b]).value;
+        const double shown = chain_power(p.sensors, body, welch_.frequency_Hz(b)) * psd[b];
+        if (!(shown + noise_psd > 0.0)) return false;
+        residuals[row] = bin_residual(shown, noise_psd, log_bias_, (*measured_log)[b]).value;
       }
     }
     return true;
@@ -216,13 +232,19 @@ class PsdCost : public ceres::CostFunction {
   simulate::AccelerationSolverOptions solver_;
 };
 
-// ln of Welch's PSD at the bins, with `noise_psd` added first (the simulated side's floor).
+// ln of Welch's PSD at the bins; for a simulated channel shown as the sensor would (`sensors`
+// given), times its chain's factor and with `noise_psd` added (the simulated side's floor).
 std::vector<double> log_psd(const WelchBins& welch, const std::vector<double>& x,
-                            double noise_psd = 0.0) {
+                            double noise_psd = 0.0,
+                            const model::AccelerationSensors<double>* sensors = nullptr,
+                            bool body = true) {
   std::vector<double> psd;
   std::vector<std::vector<double>> none;
   welch.evaluate(x, {}, psd, none);
-  for (double& p : psd) p = std::log(std::max(p + noise_psd, 1e-300));
+  for (std::size_t b = 0; b < psd.size(); ++b) {
+    const double c = sensors ? chain_power(*sensors, body, welch.frequency_Hz(b)) : 1.0;
+    psd[b] = std::log(std::max(c * psd[b] + noise_psd, 1e-300));
+  }
   return psd;
 }
 
@@ -400,16 +422,18 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
       car, car.parameters(), *m.road, m.time_s, solver_options(options));
   if (!series) return std::nullopt;
   PsdMismatch mismatch;
-  for (const auto& [acc, measured_log, noise_psd] :
-       {std::tuple{&series->body, &setup.body_log, setup.noise.body_psd},
-        std::tuple{&series->wheel, &setup.wheel_log, setup.noise.wheel_psd}}) {
+  for (const auto& [acc, measured_log, noise_psd, body] :
+       {std::tuple{&series->body, &setup.body_log, setup.noise.body_psd, true},
+        std::tuple{&series->wheel, &setup.wheel_log, setup.noise.wheel_psd, false}}) {
     if (measured_log->empty()) continue;
     std::vector<double> psd;
     std::vector<std::vector<double>> none;
     setup.welch.evaluate(*acc, {}, psd, none);
     for (std::size_t b = 0; b < psd.size(); ++b) {
+      const double shown =
+          chain_power(car.parameters().sensors, body, setup.welch.frequency_Hz(b)) * psd[b];
       const double r =
-          bin_residual(std::max(psd[b], 1e-300), noise_psd, setup.log_bias, (*measured_log)[b])
+          bin_residual(std::max(shown, 1e-300), noise_psd, setup.log_bias, (*measured_log)[b])
               .value;
       mismatch.cost += 0.5 * r * r;
       ++mismatch.residuals;
@@ -586,11 +610,13 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
   };
   if (series && !body_log.empty()) {
     best.measured_body_psd = exp_of(body_log);
-    best.fitted_body_psd = exp_of(log_psd(welch, series->body, noise.body_psd));
+    best.fitted_body_psd =
+        exp_of(log_psd(welch, series->body, noise.body_psd, &best.fitted.sensors, true));
   }
   if (series && !wheel_log.empty()) {
     best.measured_wheel_psd = exp_of(wheel_log);
-    best.fitted_wheel_psd = exp_of(log_psd(welch, series->wheel, noise.wheel_psd));
+    best.fitted_wheel_psd =
+        exp_of(log_psd(welch, series->wheel, noise.wheel_psd, &best.fitted.sensors, false));
   }
   best.noise_floors = noise;
   return best;

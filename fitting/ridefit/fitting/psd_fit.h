@@ -93,7 +93,9 @@ struct PsdFitResult {
 
 // Fits the free parameters of the stick/slip (or the file's) quarter car so that its simulated
 // body and wheel acceleration PSDs match the measured ones over the band: residuals are the
-// differences of the natural logs of the PSDs bin by bin, ln(P_sim + N) − ln(P_meas) with N the
+// differences of the natural logs of the PSDs bin by bin, ln(c·P_sim + N) − ln(P_meas) with c the
+// accelerometer chain's g²·|H(f)|² (the car's sensors, model/acceleration_sensors.h: 1 for an
+// ideal sensor; its gains and cutoff may be freed, d(c·P) = dc·P + c·dP) and N the
 // channel's sensor-noise floor (noise_floors; d ln(P + N) = dP/(P + N)), less the small expected
 // log-bias of the noise's own χ² scatter in bins it dominates (b·q·(2 − q), q = N/(P + N),
 // b ≈ 1/ν; psd_fit.cc bin_residual) (Welch with the same settings on both sides, so every bin has

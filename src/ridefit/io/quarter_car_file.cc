@@ -32,6 +32,10 @@ constexpr double kMaxCompressionToReboundRatio = 10.0;
 constexpr double kMaxLength_m = 1.0;
 constexpr double kMaxVelocity_m_per_s = 10.0;
 constexpr double kMaxBumpStopExponent = 10.0;
+// An accelerometer channel's gain: > 0 and at most 10 (a typed percentage or a unit slip, g for
+// m/s², is caught); a low-pass cutoff up to 100 kHz.
+constexpr double kMaxSensorGain = 10.0;
+constexpr double kMaxCutoff_Hz = 1e5;
 
 // `key` is only meaningful together with `needed`: name both when `needed` is missing.
 void require_with(const YamlMap& file, const std::string& key, const std::string& needed,
@@ -142,6 +146,31 @@ void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<dou
   if (file.has("command_lag_s")) p.command_lag_s = file.number_in("command_lag_s", 0.0, 1.0);
 }
 
+// 7. The accelerometers' measuring chain (acceleration_sensors.h), each key optional: gains
+// (default 1), a low-pass cutoff (default 0 = none) and its order (1 or 2, only with a cutoff).
+void read_acceleration_sensors(const YamlMap& file, model::AccelerationSensors<double>& s) {
+  if (file.has("body_acc_gain")) {
+    s.body_acc_gain = file.positive_up_to("body_acc_gain", kMaxSensorGain);
+  }
+  if (file.has("wheel_acc_gain")) {
+    s.wheel_acc_gain = file.positive_up_to("wheel_acc_gain", kMaxSensorGain);
+  }
+  if (file.has("acc_sensor_cutoff_Hz")) {
+    s.acc_sensor_cutoff_Hz = file.non_negative_up_to("acc_sensor_cutoff_Hz", kMaxCutoff_Hz);
+  }
+  if (file.has("acc_sensor_order")) {
+    require_with(file, "acc_sensor_order", "acc_sensor_cutoff_Hz",
+                 "the low-pass' corner frequency, 0 = none");
+    const double order = file.number("acc_sensor_order");
+    if (order != 1.0 && order != 2.0) {
+      throw InputError(fmt::format(
+          "{} is {}, expected 1 (first-order low-pass) or 2 (two first-order stages in series)",
+          file.locate("acc_sensor_order"), order));
+    }
+    s.acc_sensor_order = static_cast<int>(order);
+  }
+}
+
 QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_state) {
   file.choice("model", {"quarter_car"});
   QuarterCarFile result{};
@@ -183,6 +212,7 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
   }
   read_optional_effects(file, p);
   read_controlled_damper(file, p);
+  read_acceleration_sensors(file, p.sensors);
   file.finish();
   return result;
 }

@@ -56,6 +56,14 @@ namespace ridefit::io {
 //   coulomb_force_per_command_N: 200       # Fc_b per A or V, in [-1e4, 1e4]
 //   command_lag_s: 0.01                    # τ, in [0, 1]; 0 = ū follows u at once
 //
+// Optional measuring chain of the accelerometers (acceleration_sensors.h): not physics, what the
+// spectral comparisons (fit psd, diagnose) apply to the simulated PSDs, g²·|H(f)|²·P_sim.
+//   body_acc_gain: 0.9                     # measured over true body_acc, in (0, 10], default 1
+//   wheel_acc_gain: 1                      # the same for wheel_acc
+//   acc_sensor_cutoff_Hz: 15               # low-pass corner f_c, in [0, 1e5]; 0 = none (default)
+//   acc_sensor_order: 2                    # 1: |H|² = 1/(1 + (f/f_c)²); 2: its square (two
+//                                          # first-order stages); default 1, needs the cutoff key
+//
 // Every numeric key can be given by `--set key=value` (tyre_lift_off=1 or 0 included).
 // Unknown keys, missing keys, non-numbers and out-of-range values are InputErrors naming
 // the file and the key.

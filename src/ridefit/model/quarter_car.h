@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 
+#include "ridefit/model/acceleration_sensors.h"
 #include "ridefit/model/bump_stop.h"
 #include "ridefit/model/kelvin_voigt.h"
 #include "ridefit/model/linear_spring.h"
@@ -53,6 +54,10 @@ struct QuarterCarParameters {
   T damping_per_command_Ns_per_m{0.0};
   T coulomb_force_per_command_N{0.0};
   T command_lag_s{0.0};
+  // The accelerometers' measuring chain (acceleration_sensors.h): gains and a low-pass that the
+  // spectral comparisons apply to the simulated PSDs; the motion never depends on them. Ideal by
+  // default.
+  AccelerationSensors<T> sensors{};
 
   template <typename U>
   QuarterCarParameters<U> cast() const {
@@ -80,7 +85,8 @@ struct QuarterCarParameters {
             U(stribeck_velocity_m_per_s),
             U(damping_per_command_Ns_per_m),
             U(coulomb_force_per_command_N),
-            U(command_lag_s)};
+            U(command_lag_s),
+            sensors.template cast<U>()};
   }
 
   // Coil spring in series with the top mount's spring path.

@@ -11,8 +11,10 @@ namespace ridefit::model {
 
 // The continuous quarter-car parameters by their YAML key (design.md's names), in one table, so
 // the fits and the diagnosis address a parameter by name and reach the same field for doubles
-// and for Jets. tyre_lift_off is a switch, not a parameter, and is not listed.
-inline constexpr std::array<std::string_view, 24> kQuarterCarParameterNames{
+// and for Jets. tyre_lift_off and acc_sensor_order are switches, not parameters, and are not
+// listed. The last three are the accelerometers' measuring chain (acceleration_sensors.h), not
+// physics.
+inline constexpr std::array<std::string_view, 27> kQuarterCarParameterNames{
     "sprung_mass_kg",
     "unsprung_mass_kg",
     "tyre_stiffness_N_per_m",
@@ -36,7 +38,10 @@ inline constexpr std::array<std::string_view, 24> kQuarterCarParameterNames{
     "stribeck_velocity_m_per_s",
     "damping_per_command_Ns_per_m",
     "coulomb_force_per_command_N",
-    "command_lag_s"};
+    "command_lag_s",
+    "body_acc_gain",
+    "wheel_acc_gain",
+    "acc_sensor_cutoff_Hz"};
 
 // Index of `name` in kQuarterCarParameterNames, or none.
 inline std::optional<std::size_t> quarter_car_parameter_index(std::string_view name) {
@@ -72,7 +77,10 @@ T& quarter_car_parameter(QuarterCarParameters<T>& p, std::size_t index) {
                        &p.stribeck_velocity_m_per_s,
                        &p.damping_per_command_Ns_per_m,
                        &p.coulomb_force_per_command_N,
-                       &p.command_lag_s};
+                       &p.command_lag_s,
+                       &p.sensors.body_acc_gain,
+                       &p.sensors.wheel_acc_gain,
+                       &p.sensors.acc_sensor_cutoff_Hz};
   static_assert(sizeof(fields) / sizeof(fields[0]) == kQuarterCarParameterNames.size());
   return *fields[index];
 }

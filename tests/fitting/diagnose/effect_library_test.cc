@@ -134,6 +134,21 @@ TEST(EffectLibrary, EachEffectStartsInsideItsBoundsAndCannotBeAddedTwice) {
   EXPECT_NE(find_effect("sensor_delay").not_applicable(bare_passat()).find("auto-spectra"),
             std::string::npos);
   EXPECT_TRUE(find_effect("sensor_gain").measurement_chain());
+  // The accelerometers' gain and low-pass apply to spectra as well, once, starting in bounds.
+  for (const char* id : {"sensor_gain", "sensor_band_limit"}) {
+    ASSERT_EQ(find_effect(id).not_applicable(bare_passat()), "") << id;
+    const EffectChange change = find_effect(id).change(bare_passat());
+    const DiagnosisModel with = apply(bare_passat(), change);
+    for (const auto& p : change.free) {
+      EXPECT_GT(value_in(with, p.name), p.lower) << id << " " << p.name;
+      EXPECT_LT(value_in(with, p.name), p.upper) << id << " " << p.name;
+    }
+    EXPECT_NE(find_effect(id).not_applicable(with), "") << id << " applies twice";
+  }
+  EXPECT_EQ(apply(bare_passat(), find_effect("sensor_band_limit").change(bare_passat()))
+                .car.parameters()
+                .sensors.acc_sensor_order,
+            1);
   EXPECT_FALSE(find_effect("damper_friction").measurement_chain());
   EXPECT_NE(find_effect("friction_velocity_dependence").not_applicable(bare_passat()), "");
   EXPECT_NE(find_effect("friction_velocity_dependence").not_applicable(rig_passat(0.0)), "");
@@ -193,10 +208,8 @@ PsdMeasurement rough_record(const model::QuarterCar& truth) {
 
 class EffectGradient : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(EffectGradient, PsdJacobianMatchesCentralDifferences) {
-  const Effect& effect = find_effect(GetParam());
-  const DiagnosisModel baseline = baseline_for(effect.id());
-  const EffectChange change = effect.change(baseline);
+// The Jacobian of the PSD fit with `change` applied to `baseline` and its parameters free.
+void expect_exact_psd_jacobian(const DiagnosisModel& baseline, const EffectChange& change) {
   const DiagnosisModel with = apply(baseline, change);
   const PsdMeasurement m = rough_record(with.car);
   PsdFitOptions options;
@@ -219,11 +232,28 @@ TEST_P(EffectGradient, PsdJacobianMatchesCentralDifferences) {
   expect_exact_jacobian(*cost, x, options.free, 1e-6, 1e-4);
 }
 
+TEST_P(EffectGradient, PsdJacobianMatchesCentralDifferences) {
+  const Effect& effect = find_effect(GetParam());
+  // The measurement chain's effects apply to rig loops and vehicle spectra: here the spectra.
+  const bool chain = effect.id().starts_with("sensor_");
+  const DiagnosisModel baseline = chain ? bare_passat() : baseline_for(effect.id());
+  ASSERT_EQ(effect.not_applicable(baseline), "");
+  const EffectChange change = effect.change(baseline);
+  expect_exact_psd_jacobian(baseline, change);
+  if (!chain) return;
+  // And from the chain's other starts (the band limit's second order).
+  for (const auto& other_start : change.other_starts) {
+    EffectChange other = change;
+    for (const auto& [key, value] : other_start) other.set[key] = value;
+    expect_exact_psd_jacobian(baseline, other);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Library, EffectGradient,
                          ::testing::Values("damper_friction", "top_mount_compliance",
                                            "top_mount_amplitude_stiffening", "tyre_damping",
                                            "damper_asymmetry", "damper_digressive", "bump_stop",
-                                           "tyre_lift_off"));
+                                           "tyre_lift_off", "sensor_gain", "sensor_band_limit"));
 
 class LoopEffectGradient : public ::testing::TestWithParam<std::string> {};
 

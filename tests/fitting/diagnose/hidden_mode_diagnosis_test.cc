@@ -161,6 +161,15 @@ void print_map(const char* what, const DiagnosisResult& r) {
                 region.low_Hz, region.high_Hz, region.size_dB, static_cast<int>(region.evidence),
                 region.above_band ? " above band" : "");
   }
+  for (const auto& round : r.rounds) {
+    for (const auto& t : round.trials) {
+      if (!t.skipped.empty() || !t.failed.empty()) continue;
+      std::printf("%s trial %s: held-out %+.0f %%, BIC %+.1f:", what, t.id.c_str(),
+                  -100.0 * t.held_out_improvement, t.bic_change);
+      for (const auto& v : t.parameters) std::printf(" %s %.4g", v.name.c_str(), v.value);
+      std::printf("\n");
+    }
+  }
   std::printf("%s verdict: %s\n", what, r.verdict.c_str());
 }
 

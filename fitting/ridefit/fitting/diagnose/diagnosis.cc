@@ -42,18 +42,22 @@ std::vector<std::string> default_free(const model::QuarterCar& car) {
   return free;
 }
 
-// The map of `m` against a simulation, the simulated PSDs with the record's noise floors added
-// (the ones its fits use: given, or estimated from `m`).
-DisagreementMap map_of(const PsdMeasurement& m, const std::vector<double>& body,
-                       const std::vector<double>& wheel, const PsdFitOptions& fit_options,
-                       const DisagreementOptions& options) {
+// The map of `m` against a simulation of `car`, the simulated PSDs as its fits show them: through
+// the car's accelerometer chain (gains, low-pass) and with the record's noise floors added (given,
+// or estimated from `m`).
+DisagreementMap map_of(const PsdMeasurement& m, const model::QuarterCar& car,
+                       const std::vector<double>& body, const std::vector<double>& wheel,
+                       const PsdFitOptions& fit_options, const DisagreementOptions& options) {
   const NoiseFloors noise = noise_floors(m, fit_options);
+  const model::AccelerationSensors<double> sensors = car.parameters().sensors;
   std::vector<ChannelPair> channels;
   if (!m.body_acc_m_per_s2.empty()) {
-    channels.push_back({"body_acc", m.body_acc_m_per_s2, body, noise.body_psd});
+    channels.push_back({"body_acc", m.body_acc_m_per_s2, body, noise.body_psd,
+                        [sensors](double f) { return sensors.body_power_gain(f); }});
   }
   if (!m.wheel_acc_m_per_s2.empty()) {
-    channels.push_back({"wheel_acc", m.wheel_acc_m_per_s2, wheel, noise.wheel_psd});
+    channels.push_back({"wheel_acc", m.wheel_acc_m_per_s2, wheel, noise.wheel_psd,
+                        [sensors](double f) { return sensors.wheel_power_gain(f); }});
   }
   return map_disagreement(channels, m.sample_rate_Hz, options);
 }
@@ -88,9 +92,9 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   }
   s.held_out_cost = held_out->cost;
   s.held_out_signals = {held_out->body_acc_m_per_s2, held_out->wheel_acc_m_per_s2};
-  s.held_out_gap =
-      map_of(data.held_out, s.held_out_signals[0], s.held_out_signals[1], options, map_options)
-          .gap_dB;
+  s.held_out_gap = map_of(data.held_out, s.model.car, s.held_out_signals[0], s.held_out_signals[1],
+                          options, map_options)
+                       .gap_dB;
   return s;
 }
 
@@ -169,12 +173,12 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   DiagnosisResult result = result_of(selection, DataKind::kVehicleSpectra);
   const ScoredFit& before = selection.baseline;
   const ScoredFit& after = selection.final_fit;
-  result.before = map_of(data.held_out, before.held_out_signals[0], before.held_out_signals[1],
-                         final_fit, map_options);
+  result.before = map_of(data.held_out, before.model.car, before.held_out_signals[0],
+                         before.held_out_signals[1], final_fit, map_options);
   result.before_body = before.held_out_signals[0];
   result.before_wheel = before.held_out_signals[1];
-  result.after = map_of(data.held_out, after.held_out_signals[0], after.held_out_signals[1],
-                        final_fit, map_options);
+  result.after = map_of(data.held_out, after.model.car, after.held_out_signals[0],
+                        after.held_out_signals[1], final_fit, map_options);
   result.after_body = after.held_out_signals[0];
   result.after_wheel = after.held_out_signals[1];
   result.gap_before = result.before.gap_dB;

@@ -171,7 +171,8 @@ DisagreementMap map_disagreement(const std::vector<ChannelPair>& channels, doubl
       const bool above = f > options.band_high_Hz && f <= above_high;
       if (!in_band && !above) continue;
       const double pm = std::max(measured.psd[k], 1e-300);
-      const double ps = std::max(simulated.psd[k] + c.noise_psd, 1e-300);
+      const double chain = c.chain_power ? c.chain_power(f) : 1.0;
+      const double ps = std::max(chain * simulated.psd[k] + c.noise_psd, 1e-300);
       const double ratio = 10.0 * std::log10(ps / pm);
       d.frequency_Hz.push_back(f);
       d.measured_psd.push_back(pm);

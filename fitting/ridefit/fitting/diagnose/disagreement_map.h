@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ struct ChannelPair {
   // simulated PSD before the comparison (the model as the sensor would show it), so bins where
   // the measurement is noise do not read as the model missing something.
   double noise_psd = 0.0;
+  // The measuring chain's factor on the simulated PSD at a frequency [Hz] (a gain squared times a
+  // low-pass' |H|², model/acceleration_sensors.h), applied before the floor is added:
+  // P_shown = chain_power(f)·P_sim + N. Empty = 1 (an ideal sensor).
+  std::function<double(double frequency_Hz)> chain_power{};
 };
 
 struct DisagreementOptions {

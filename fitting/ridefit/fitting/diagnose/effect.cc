@@ -34,6 +34,7 @@ const Effect& find_effect(std::string_view id) {
 
 double parameter_value(const model::QuarterCar& car, std::string_view name) {
   if (name == "tyre_lift_off") return car.parameters().tyre_lift_off ? 1.0 : 0.0;
+  if (name == "acc_sensor_order") return car.parameters().sensors.acc_sensor_order;
   const auto index = model::quarter_car_parameter_index(name);
   if (!index) throw InputError(fmt::format("'{}' is not a quarter-car parameter", name));
   return model::quarter_car_parameter(car.parameters(), *index);
@@ -55,6 +56,10 @@ DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change) {
   for (const auto& [name, value] : change.set) {
     if (name == "tyre_lift_off") {
       p.tyre_lift_off = value != 0.0;
+      continue;
+    }
+    if (name == "acc_sensor_order") {
+      p.sensors.acc_sensor_order = value == 2.0 ? 2 : 1;
       continue;
     }
     const auto index = model::quarter_car_parameter_index(name);

@@ -83,8 +83,8 @@ DiagnosisModel apply(const DiagnosisModel& model, const EffectChange& change);
 // A strut's value of a key of fitting/strut_parameters.h.
 double parameter_value(const model::StrutTestParameters<double>& strut, std::string_view name);
 
-// A quarter car's value of a key of model/quarter_car_parameter_names.h, or of tyre_lift_off
-// (0 or 1).
+// A quarter car's value of a key of model/quarter_car_parameter_names.h, or of the switches
+// tyre_lift_off (0 or 1) and acc_sensor_order (1 or 2).
 double parameter_value(const model::QuarterCar& car, std::string_view name);
 
 }  // namespace ridefit::fitting::diagnose

@@ -17,8 +17,10 @@ class SensorDelay : public Effect {
   bool measurement_chain() const override { return true; }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
     if (baseline.kind != DataKind::kStrutLoops) {
-      return "a delay between road and accelerations does not change their auto-spectra, which "
-             "is all the spectral diagnosis compares";
+      return "a pure delay leaves an auto-spectrum unchanged (|e^(-i·2πf·τ)| = 1 at every "
+             "frequency), and the spectral diagnosis compares auto-spectra only: a delay between "
+             "road and accelerations needs a comparison in time or the cross-spectra with the "
+             "road";
     }
     if (baseline.strut.force_delay_s > 0.0) return "the baseline already has a delay";
     return "";

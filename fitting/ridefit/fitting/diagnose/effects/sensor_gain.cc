@@ -1,4 +1,6 @@
-// sensor_gain: the load cell reads the force times a gain (a calibration error).
+// sensor_gain: a channel reads the true signal times a gain (a calibration error): the load cell's
+// force on the rig, the body and wheel accelerometers on vehicle spectra (model/
+// acceleration_sensors.h: g² on the channel's PSD).
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
@@ -10,8 +12,9 @@ class SensorGain : public Effect {
  public:
   std::string_view id() const override { return "sensor_gain"; }
   std::string_view description() const override {
-    return "a gain error of the force channel (load-cell calibration or amplifier): every "
-           "measured force is the true one times a constant";
+    return "a gain error of a channel (load-cell or accelerometer calibration, amplifier): every "
+           "measured force or acceleration is the true one times a constant, which shifts its "
+           "whole spectrum by 20·log10(g) dB";
   }
   bool measurement_chain() const override { return true; }
   std::string_view identifiable_from() const override {
@@ -20,14 +23,29 @@ class SensorGain : public Effect {
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
     if (baseline.kind != DataKind::kStrutLoops) {
-      return "for rig records: on vehicle spectra a channel gain trades off against the masses "
-             "and stiffnesses the fit frees";
+      const auto& s = baseline.car.parameters().sensors;
+      if (s.body_acc_gain != 1.0 || s.wheel_acc_gain != 1.0) {
+        return "the baseline already has accelerometer gains (free body_acc_gain or "
+               "wheel_acc_gain with --free to refit them)";
+      }
+      return "";
     }
     if (baseline.strut.force_gain != 1.0) return "the baseline already has a force gain";
     return "";
   }
-  EffectChange change(const DiagnosisModel&) const override {
-    return {{{"force_gain", 0.99}}, {}, {{"force_gain", 0.5, 2.0}}, {}};
+  EffectChange change(const DiagnosisModel& baseline) const override {
+    if (baseline.kind == DataKind::kStrutLoops) {
+      return {{{"force_gain", 0.99}}, {}, {{"force_gain", 0.5, 2.0}}, {}};
+    }
+    // Vehicle spectra: both accelerometers' gains, each from near 1. The road is measured, so
+    // a gain cannot hide in the excitation: below the body mode the body follows the road
+    // (transmissibility 1 whatever the masses and stiffnesses), and a gain lifts the whole
+    // channel by the same dB where a physical parameter reshapes it. A channel whose level
+    // agrees keeps its gain at 1.
+    return {{{"body_acc_gain", 0.99}, {"wheel_acc_gain", 0.99}},
+            {},
+            {{"body_acc_gain", 0.5, 2.0}, {"wheel_acc_gain", 0.5, 2.0}},
+            {}};
   }
 };
 
