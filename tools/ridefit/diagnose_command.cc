@@ -21,6 +21,7 @@
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/model/quarter_car_parameter_names.h"
 #include "ridefit/road/road_input.h"
@@ -126,16 +127,16 @@ nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string&
   return rounds;
 }
 
-void check_output_is_not_an_input(const DiagnoseFlags& flags) {
+std::vector<std::string> check_output_folder(const DiagnoseFlags& flags,
+                                             const std::string& figure) {
   std::vector<std::filesystem::path> inputs{flags.model_file};
   for (const auto& f : flags.records) inputs.push_back(f);
   for (const auto& f : flags.excitations) inputs.push_back(f);
-  for (const auto& input : inputs) {
-    std::error_code ec;
-    if (std::filesystem::equivalent(input, flags.output_dir, ec)) {
-      throw InputError(fmt::format("-o {}: that is an input", flags.output_dir));
-    }
-  }
+  std::vector<std::string> files = {"report.md", "model.yaml"};
+  if (io::gnuplot_available()) files.push_back(figure);
+  io::RunOutputs outputs(inputs);
+  outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+  return files;
 }
 
 bool is_rig_record(const std::filesystem::path& csv_file) {
@@ -381,7 +382,7 @@ void run(const DiagnoseFlags& flags) {
   options.fit.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
   options.selection.threads = flags.threads;
 
-  check_output_is_not_an_input(flags);
+  const std::vector<std::string> files = check_output_folder(flags, "spectra.png");
   const std::filesystem::path dir = flags.output_dir;
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::PsdMeasurement> records;
@@ -435,6 +436,7 @@ void run(const DiagnoseFlags& flags) {
                                           flags.records.front(), result.verdict));
   io::write_atomically(dir / "report.md",
                        [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
+  io::finish_output_folder(dir, files);
 
   if (flags.json) {
     nlohmann::json j = {{"verdict", result.verdict},
@@ -522,6 +524,9 @@ void register_diagnose(CLI::App& app) {
   command->add_flag("--json", flags->json,
                     "Ranked effects, scores, parameters, the gap before and after");
   command->add_flag("-q,--quiet", flags->quiet, "No progress on stderr");
+  command->add_flag("--force", flags->force,
+                    "Write into an existing -o folder that holds files ridefit did not write "
+                    "there (files of the same name are replaced; inputs never are)");
   command->callback([flags] { run(*flags); });
 }
 

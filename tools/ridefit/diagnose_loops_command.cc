@@ -20,6 +20,7 @@
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 
 namespace ridefit::cli {
@@ -187,7 +188,7 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
   options.baseline_free = flags.free;
   options.selection.threads = flags.threads;
 
-  check_output_is_not_an_input(flags);
+  const std::vector<std::string> files = check_output_folder(flags, "loops.png");
   const std::filesystem::path dir = flags.output_dir;
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::HysteresisRecord> records;
@@ -223,6 +224,7 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
                   rig_only.empty() ? "" : "\n# rig only (not model keys): " + rig_only));
   io::write_atomically(dir / "report.md",
                        [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
+  io::finish_output_folder(dir, files);
 
   if (flags.json) {
     auto regions = [](const std::vector<dx::LoopRegion>& list) {

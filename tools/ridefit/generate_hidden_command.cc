@@ -39,6 +39,8 @@
 #include <random>
 #include <set>
 
+#include <unistd.h>
+
 #include <yaml-cpp/yaml.h>
 
 #include "command_options.h"
@@ -46,6 +48,7 @@
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/road/excitation_file.h"
@@ -61,6 +64,7 @@ struct GenerateHiddenFlags {
   std::string spec_file;
   std::string output_dir;
   long seed_offset = 0;
+  bool force = false;
 };
 
 struct Dataset {
@@ -71,6 +75,8 @@ struct Dataset {
   std::filesystem::path model;
   std::string damper_state;
   std::map<std::string, double> set;
+  std::string set_location;  // where `set:` is in the spec, for messages
+  std::string location;      // the dataset's entry in the spec
   std::vector<std::string> effects;
   std::filesystem::path excitation;
   double duration_s = 0.0;
@@ -90,7 +96,9 @@ Dataset read_dataset(const io::YamlMap& d) {
   out.strut_rig = d.has("kind") && d.choice("kind", {"vehicle", "strut_rig"}) == "strut_rig";
   out.model = d.file("model");
   out.damper_state = out.strut_rig ? "" : d.text_or("damper_state", "");
+  out.location = d.locate("name");
   if (d.has("set")) {
+    out.set_location = d.locate("set");
     const io::YamlMap set = d.map("set");
     for (const auto& key : set.keys()) out.set[key] = set.number(key);
     set.finish();
@@ -123,9 +131,19 @@ Dataset read_dataset(const io::YamlMap& d) {
             fmt::format("{}: frequencies must be finite and > 0 Hz", rig.locate("frequencies_Hz")));
       }
     }
-    rig.finish();
     out.duration_s = d.positive("duration_s");
     out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 1000.0;
+    for (double f : out.rig_frequencies_Hz) {
+      if (!(f < 0.5 * out.sample_rate_Hz)) {
+        throw InputError(fmt::format(
+            "{}: {:g} Hz is at or above the Nyquist frequency ({:g} Hz at sample_rate_Hz {:g}); "
+            "the record would show an alias. Give frequencies below {:g} Hz or a sample rate "
+            "above {:g} Hz",
+            rig.locate("frequencies_Hz"), f, 0.5 * out.sample_rate_Hz, out.sample_rate_Hz,
+            0.5 * out.sample_rate_Hz, 2.0 * f));
+      }
+    }
+    rig.finish();
     out.noise_N = d.has("noise_N") ? d.non_negative("noise_N") : 0.6;
   } else {
     out.excitation = d.file("excitation");
@@ -146,11 +164,23 @@ Dataset read_dataset(const io::YamlMap& d) {
     out.sensor.noise_fraction = s.has("noise") ? s.non_negative_up_to("noise", 1.0) : 0.005;
     out.sensor.high_pass_Hz = s.has("high_pass_Hz") ? s.non_negative("high_pass_Hz") : 0.1;
     out.sensor.low_pass_Hz = s.has("low_pass_Hz") ? s.positive("low_pass_Hz") : 0.0;
+    const double nyquist_Hz = 0.5 * out.sample_rate_Hz;
+    auto below_nyquist = [&](const io::YamlMap& map, const std::string& key, double f) {
+      if (f >= nyquist_Hz) {
+        throw InputError(fmt::format(
+            "{} is {:g} Hz, at or above the Nyquist frequency ({:g} Hz at sample_rate_Hz {:g}); "
+            "give a frequency below {:g} Hz or a higher sample rate",
+            map.locate(key), f, nyquist_Hz, out.sample_rate_Hz, nyquist_Hz));
+      }
+    };
+    below_nyquist(s, "high_pass_Hz", out.sensor.high_pass_Hz);
+    below_nyquist(s, "low_pass_Hz", out.sensor.low_pass_Hz);
     if (s.has("mount")) {
       const io::YamlMap m = s.map("mount");
       out.mount_channel = m.choice("channel", {"body_acc", "wheel_acc"});
       out.sensor.mount =
           study::SensorMount{m.positive("frequency_Hz"), m.positive("damping_ratio")};
+      below_nyquist(m, "frequency_Hz", out.sensor.mount->frequency_Hz);
       m.finish();
     }
     s.finish();
@@ -245,6 +275,27 @@ void run(const GenerateHiddenFlags& flags) {
   for (const auto& d : spec.maps("datasets")) datasets.push_back(read_dataset(d));
   spec.finish();
   if (datasets.empty()) throw InputError(fmt::format("{}: no datasets", flags.spec_file));
+  // Every file the run writes, each once; none an input.
+  std::vector<std::string> files;
+  io::RunOutputs outputs({flags.spec_file});
+  for (std::size_t i = 0; i < datasets.size(); ++i) {
+    const Dataset& d = datasets[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      if (datasets[j].name == d.name) {
+        throw InputError(fmt::format(
+            "{}: dataset name '{}' is also the name of dataset {} ({}); each dataset's files are "
+            "named after it, so give each its own name",
+            d.location, d.name, j + 1, datasets[j].location));
+      }
+    }
+    outputs.add_input(d.model);
+    if (!d.strut_rig) outputs.add_input(d.excitation);
+    for (int k = 1; k <= d.records; ++k) {
+      files.push_back(k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k));
+    }
+    files.push_back(d.name + "_truth.yaml");
+  }
+  outputs.add_folder(flags.output_dir, "-o", files, flags.force);
   // Every model and excitation is checked before anything is simulated or written.
   std::vector<model::QuarterCar> truths;
   std::vector<model::StrutTestParameters<double>> struts;
@@ -256,15 +307,19 @@ void run(const GenerateHiddenFlags& flags) {
         try {
           fitting::strut_parameter(strut, fitting::strut_parameter_index(key)) = value;
         } catch (const InputError& e) {
-          throw InputError(
-              fmt::format("{}: dataset {}: set: {}", flags.spec_file, d.name, e.what()));
+          throw InputError(fmt::format("{}: {}", d.set_location, e.what()));
         }
       }
       truths.push_back(file.make_model());
       struts.push_back(strut);
       continue;
     }
-    truths.push_back(io::load_quarter_car(d.model, d.set, d.damper_state).make_model());
+    try {
+      truths.push_back(io::load_quarter_car(d.model, d.set, d.damper_state).make_model());
+    } catch (const InputError& e) {
+      throw InputError(
+          with_override_origin(e.what(), fmt::format("given in {} as ", d.set_location)));
+    }
     struts.emplace_back();
     road::load_excitation(d.excitation);
     study::SensorModel check = d.sensor;
@@ -297,7 +352,8 @@ void run(const GenerateHiddenFlags& flags) {
       truth["mount"]["damping_ratio"] = d.sensor.mount->damping_ratio;
     }
     for (int k = 1; k <= d.records; ++k) {
-      const auto road = excitation_for(d, k, dir / (".road_" + d.name + ".yaml"));
+      const auto road = excitation_for(
+          d, k, dir / fmt::format(".road_{}.yaml.tmp{}", d.name, static_cast<long>(getpid())));
       simulate::SimulationOptions options;
       options.output_rate_Hz = d.sample_rate_Hz;
       options.duration_s = d.duration_s;
@@ -333,6 +389,7 @@ void run(const GenerateHiddenFlags& flags) {
           << truth << "\n";
     });
   }
+  io::finish_output_folder(dir, files);
 }
 
 }  // namespace
@@ -349,6 +406,9 @@ void register_generate_hidden(CLI::App& app) {
   command->add_option("-o,--output", flags->output_dir, "Output folder")->required();
   command->add_option("--seed", flags->seed_offset, "Added to every dataset's noise seed")
       ->capture_default_str();
+  command->add_flag("--force", flags->force,
+                    "Write into an existing -o folder that holds files ridefit did not write "
+                    "there (files of the same name are replaced; inputs never are)");
   command->callback([flags] { run(*flags); });
 }
 

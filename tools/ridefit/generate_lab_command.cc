@@ -20,6 +20,7 @@
 #include "command_options.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/model/strut_test.h"
 #include "ridefit/simulate/strut_test_reference.h"
 #include "subcommands.h"
@@ -29,6 +30,7 @@ namespace {
 
 struct GenerateLabFlags {
   std::string output_dir;
+  bool force = false;
   unsigned seed = 1;
 };
 
@@ -128,7 +130,11 @@ void write_semi_active_test(const std::filesystem::path& path, std::mt19937_64& 
 }
 
 void run(const GenerateLabFlags& flags) {
-  io::prepare_output_directory(flags.output_dir, "OUT_DIR");
+  const std::vector<std::string> files = {
+      "triangle_3mm_1mmps.csv", "dynamic_60s.csv",        "shim_0mm.csv", "shim_2mm.csv",
+      "shim_4mm.csv",           "semi_active_random.csv", "truth.yaml"};
+  io::RunOutputs({}).add_folder(flags.output_dir, "DIR", files, flags.force);
+  io::prepare_output_directory(flags.output_dir, "DIR");
   const std::filesystem::path dir(flags.output_dir);
   std::mt19937_64 rng(flags.seed);
   std::vector<double> t;
@@ -160,6 +166,7 @@ void run(const GenerateLabFlags& flags) {
         "  command_lag_s: 0.012\n",
         flags.seed, kOffset_N, kNoise_N, kQuantum_N);
   });
+  io::finish_output_folder(dir, files);
   std::cout << "Rig tests written to " << flags.output_dir << "\n";
 }
 
@@ -172,6 +179,9 @@ void register_generate_lab(CLI::App& app) {
   command->add_option("directory", flags->output_dir, "Output directory (created if missing)")
       ->required();
   command->add_option("--seed", flags->seed, "Seed of the force noise")->capture_default_str();
+  command->add_flag("--force", flags->force,
+                    "Write into an existing folder that holds files ridefit did not write there "
+                    "(files of the same name are replaced)");
   command->callback([flags] { run(*flags); });
 }
 

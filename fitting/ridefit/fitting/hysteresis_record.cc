@@ -6,6 +6,7 @@
 
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/signal/signal_presence.h"
 
 namespace ridefit::fitting {
 
@@ -26,6 +27,9 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
   }
   record.displacement_m = displacement.values;
   record.force_N = force.values;
+  // A rig that did not move, or a load cell that read nothing, gives a fit of round-off.
+  signal::require_signal(record.displacement_m, record.source, "displacement", "m");
+  signal::require_signal(record.force_N, record.source, "force", "N");
   const bool current = table.has("current");
   const bool voltage = table.has("voltage");
   if (current && voltage) {

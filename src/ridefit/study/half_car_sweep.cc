@@ -200,6 +200,12 @@ HalfCarSweep load_half_car_sweep(const std::filesystem::path& study_file) {
       sweep.output_rate_Hz = time.positive_up_to("output_rate_Hz", 1e5);
     if (time.has("settle_s")) sweep.settle_s = time.non_negative_up_to("settle_s", 1e4);
     if (time.has("duration_s")) sweep.duration_s = time.positive_up_to("duration_s", 1e5);
+    if (sweep.duration_s > 0.0 && sweep.settle_s >= sweep.duration_s) {
+      throw InputError(fmt::format(
+          "{} is {:g} s, not below time.duration_s ({:g} s): nothing would be left to evaluate; "
+          "give a settle_s below the duration",
+          time.locate("settle_s"), sweep.settle_s, sweep.duration_s));
+    }
     time.finish();
   }
   std::size_t runs = sweep.roads.size() * std::max<std::size_t>(1, sweep.speeds_m_per_s.size());
@@ -310,6 +316,14 @@ std::vector<SweepRow> run_half_car_sweep(
     }
     if (!c.frequency) {
       c.input = speed ? road::load_excitation(path, *speed) : road::load_excitation(path);
+      const double used_s = sweep.duration_s > 0.0 ? sweep.duration_s : c.input->duration_s();
+      if (sweep.settle_s >= used_s) {
+        throw InputError(fmt::format(
+            "{}: time.settle_s is {:g} s, not below the {:g} s of road '{}'{}: nothing would be "
+            "left to evaluate; give a shorter settle_s or a longer road",
+            sweep.study_file.string(), sweep.settle_s, used_s, sweep.roads[point.road].first,
+            sweep.duration_s > 0.0 ? " (time.duration_s)" : ""));
+      }
     }
     roads[key] = std::move(c);
   }
