@@ -1,12 +1,18 @@
 // Issue 16 on the command line: nothing a user owns is overwritten (outputs against inputs and
 // each other, output folders, journals), empty or degenerate data is refused (exit 2 naming the
 // file and channel), and messages point at what the user gave.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "support/cli_runner.h"
 #include "support/passat.h"
@@ -127,6 +133,60 @@ TEST(ReliabilityCli, FrictionStudyRefusesTwoExcitationsOfOneStemAndAFolderHoldin
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_TRUE(contains(run.output, "notes.txt")) << run.output;
   EXPECT_FALSE(fs::exists(dir.path() / "sweep_2mm_psd.csv"));
+}
+
+TEST(ReliabilityCli, ARecordGivenTwiceIsRefusedByFitAndDiagnose) {
+  TempDir dir("ridefit_reliability");
+  const std::string record = dataset("hidden/baseline_only.csv");
+  const auto diagnose = run_cli("diagnose " + dataset("hidden/baselines/passat_slip.yaml") + " " +
+                                record + " " + record + " -q -o " + (dir.path() / "d").string());
+  EXPECT_EQ(diagnose.exit_code, 2) << diagnose.output;
+  EXPECT_TRUE(contains(diagnose.output, "given twice")) << diagnose.output;
+  const std::string loop = dataset("lab/shim_0mm.csv");
+  const auto fit = run_cli("fit hysteresis " + loop + " " + loop + " --model " +
+                           dataset("vehicles/passat_b8_front.yaml") + " --free coulomb_force_N");
+  EXPECT_EQ(fit.exit_code, 2) << fit.output;
+  EXPECT_TRUE(contains(fit.output, "given twice")) << fit.output;
+}
+
+// 3. A folder is replaced as a whole: a run killed midway leaves the earlier run's folder.
+
+TEST(ReliabilityCli, AKilledRunLeavesTheEarlierFolderWholeAndTheNextRunTidiesUp) {
+  TempDir dir("ridefit_reliability");
+  const auto quick = dir.write("quick.yaml", "datasets:\n" + rig_spec());
+  const auto out = dir.path() / "out";
+  ASSERT_EQ(run_cli("generate-hidden " + quick + " -o " + out.string()).exit_code, 0);
+  const std::string before = text_of(out / "gas.csv");
+  // A longer run into the same folder, killed (SIGKILL) once it has written its first record.
+  std::string slow_text = "datasets:\n" + rig_spec();
+  slow_text.replace(slow_text.find("duration_s: 4"), 13, "duration_s: 40");
+  slow_text.replace(slow_text.find("seed: 9"), 7, "seed: 10\n    records: 6");
+  const auto slow = dir.write("slow.yaml", slow_text);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, 1);
+    dup2(null, 2);
+    execl(RIDEFIT_CLI, RIDEFIT_CLI, "generate-hidden", slow.c_str(), "-o", out.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const fs::path staged = dir.path() / (".out.tmp" + std::to_string(pid));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(staged / "gas.csv") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  // The folder is the earlier run's, whole: no new record beside old ones.
+  EXPECT_EQ(text_of(out / "gas.csv"), before);
+  EXPECT_FALSE(fs::exists(out / "gas_3.csv"));
+  // The next run removes what the killed one left and writes its folder.
+  ASSERT_EQ(run_cli("generate-hidden " + quick + " -o " + out.string()).exit_code, 0);
+  EXPECT_FALSE(fs::exists(staged));
+  EXPECT_EQ(text_of(out / "gas.csv"), before);
 }
 
 // 2. -o and --plot naming one file.

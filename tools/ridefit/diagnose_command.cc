@@ -11,6 +11,8 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
 #include "ridefit/model/quarter_car_parameter_names.h"
 #include "ridefit/road/road_input.h"
 #include "subcommands.h"
@@ -127,8 +130,34 @@ nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string&
   return rounds;
 }
 
+void require_finite_report(const std::string& text, const std::filesystem::path& path) {
+  static const std::regex non_finite(R"((^|[^A-Za-z_/.])[-+]?(nan|inf)([^A-Za-z_/.]|$))",
+                                     std::regex::icase);
+  std::smatch match;
+  if (std::regex_search(text, match, non_finite)) {
+    const auto at = static_cast<std::size_t>(match.position(0));
+    const std::size_t line_start =
+        text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
+    const std::size_t line_end = std::min(text.find('\n', at), text.size());
+    throw RunError(fmt::format(
+        "{} would show a value that is not a number, in: {}; nothing was written (the data may "
+        "be degenerate: check the records)",
+        path.string(), text.substr(line_start, line_end - line_start)));
+  }
+}
+
 std::vector<std::string> check_output_folder(const DiagnoseFlags& flags,
                                              const std::string& figure) {
+  for (std::size_t i = 0; i < flags.records.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (io::same_file(flags.records[i], flags.records[j])) {
+        throw InputError(fmt::format(
+            "{} is given twice; a record judging the fit must not be the one fitted (give "
+            "another record, or one record to be split in halves)",
+            flags.records[i]));
+      }
+    }
+  }
   std::vector<std::filesystem::path> inputs{flags.model_file};
   for (const auto& f : flags.records) inputs.push_back(f);
   for (const auto& f : flags.excitations) inputs.push_back(f);
@@ -429,14 +458,21 @@ void run(const DiagnoseFlags& flags) {
         if (!flags.quiet && !flags.json) std::cerr << "diagnose: " << line << "\n";
       });
 
-  if (figure) draw_spectra(result, dir / "spectra.png");
+  // The report first, in memory: a value that is not a number stops the run before any file
+  // is written.
+  std::ostringstream report;
+  write_report(report, flags, result, data, figure);
+  require_finite_report(report.str(), dir / "report.md");
+  // Written into a staged copy of the folder, put in place as a whole.
+  io::StagedFolder staged(dir, files);
+  const std::filesystem::path out = staged.path();
+  if (figure) draw_spectra(result, out / "spectra.png");
   const auto values = changed_keys(model_file.make_model(), result.final_model.car);
-  io::write_model_with_values(flags.model_file, values, dir / "model.yaml",
+  io::write_model_with_values(flags.model_file, values, out / "model.yaml",
                               fmt::format("{} by ridefit diagnose from {}: {}", flags.model_file,
                                           flags.records.front(), result.verdict));
-  io::write_atomically(dir / "report.md",
-                       [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
-  io::finish_output_folder(dir, files);
+  io::write_atomically(out / "report.md", [&](std::ostream& s) { s << report.str(); });
+  staged.commit();
 
   if (flags.json) {
     nlohmann::json j = {{"verdict", result.verdict},

@@ -51,10 +51,15 @@ void write_rounds(std::ostream& out, const dx::DiagnosisResult& r, const std::st
 nlohmann::json values_json(const std::vector<dx::FittedValue>& values);
 nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string& gap_key);
 
+// RunError when the report's text shows a value that is not a number (nan, inf): a report never
+// presents one as a result. `path` names the report in the message.
+void require_finite_report(const std::string& text, const std::filesystem::path& path);
+
 // The files a diagnosis writes into -o (report.md, model.yaml and, with gnuplot on PATH,
 // `figure`), checked before any work (io::RunOutputs): none is an input (the model, a record,
 // an excitation), and an existing folder holding files ridefit did not write is refused
-// unless --force. InputError naming -o otherwise.
+// unless --force. Also refuses a record given twice (the held-out record would be the fitted
+// one). InputError naming -o or the record otherwise.
 std::vector<std::string> check_output_folder(const DiagnoseFlags& flags, const std::string& figure);
 
 // True when the CSV's header names a displacement column: a strut rig test (whose loader then

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
 
 namespace ridefit::cli {
 namespace {
@@ -215,16 +217,23 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
         if (!flags.quiet && !flags.json) std::cerr << "diagnose: " << line << "\n";
       });
 
-  if (figure) draw_loops(result, data, dir / "loops.png");
+  // The report first, in memory: a value that is not a number stops the run before any file
+  // is written.
+  std::ostringstream report;
+  write_report(report, flags, result, data, figure);
+  require_finite_report(report.str(), dir / "report.md");
+  // Written into a staged copy of the folder, put in place as a whole.
+  io::StagedFolder staged(dir, files);
+  const std::filesystem::path out = staged.path();
+  if (figure) draw_loops(result, data, out / "loops.png");
   const auto [keys, rig_only] = changed(baseline.strut, result.final_model.strut);
   io::write_model_with_values(
-      flags.model_file, keys, dir / "model.yaml",
+      flags.model_file, keys, out / "model.yaml",
       fmt::format("{} by ridefit diagnose from {}: {}{}", flags.model_file, flags.records.front(),
                   result.verdict,
                   rig_only.empty() ? "" : "\n# rig only (not model keys): " + rig_only));
-  io::write_atomically(dir / "report.md",
-                       [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
-  io::finish_output_folder(dir, files);
+  io::write_atomically(out / "report.md", [&](std::ostream& s) { s << report.str(); });
+  staged.commit();
 
   if (flags.json) {
     auto regions = [](const std::vector<dx::LoopRegion>& list) {

@@ -112,6 +112,14 @@ void write_model(const std::string& model_file, model::StrutTestParameters<doubl
 }
 
 void run(const FitHysteresisFlags& flags) {
+  for (std::size_t i = 0; i < flags.files.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (io::same_file(flags.files[i], flags.files[j])) {
+        throw InputError(fmt::format(
+            "{} is given twice; a repeated record would count twice in the fit", flags.files[i]));
+      }
+    }
+  }
   std::vector<std::filesystem::path> inputs(flags.files.begin(), flags.files.end());
   inputs.push_back(flags.model_file);
   // With per-file parameters and several files, one model per file: -o's stem + the file's.

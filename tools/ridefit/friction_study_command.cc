@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "command_options.h"
@@ -17,6 +18,7 @@
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/study/friction_study.h"
 #include "subcommands.h"
@@ -100,6 +102,9 @@ void run(const FrictionStudyFlags& flags) {
     outputs.add_folder(flags.output_dir, "-o", files, flags.force);
     io::prepare_output_directory(flags.output_dir, "-o");
   }
+  // Written into a staged copy of the folder, put in place as a whole once every case ran.
+  std::optional<io::StagedFolder> staged;
+  if (!flags.output_dir.empty()) staged.emplace(flags.output_dir, files);
 
   study::FrictionStudyOptions options;
   options.coulomb_forces_N = flags.coulomb_forces_N;
@@ -125,7 +130,7 @@ void run(const FrictionStudyFlags& flags) {
     std::string psd_file;
     if (!flags.output_dir.empty()) {
       psd_file = (std::filesystem::path(flags.output_dir) / (stem + "_psd.csv")).string();
-      write_psds(result, psd_file);
+      write_psds(result, (staged->path() / (stem + "_psd.csv")).string());
     }
     nlohmann::json cases = nlohmann::json::array();
     if (!flags.json) {
@@ -160,7 +165,7 @@ void run(const FrictionStudyFlags& flags) {
     summary["excitations"].push_back(
         {{"excitation", excitation_file}, {"psd_file", psd_file}, {"cases", cases}});
   }
-  if (!flags.output_dir.empty()) io::finish_output_folder(flags.output_dir, files);
+  if (staged) staged->commit();
   if (!flags.json) {
     std::cout << "\nbody_pk: body-acceleration PSD peak in 0.5-6 Hz; wheel_pk: wheel PSD peak in "
                  "8-30 Hz;\nRMS in m/s^2; body_Wk: ISO 2631-1 Wk-weighted body RMS (needs --rate "

@@ -50,6 +50,8 @@
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
+#include "ridefit/io/temporary_files.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
@@ -199,6 +201,7 @@ std::unique_ptr<road::RoadInput> excitation_for(const Dataset& d, int record,
   }
   const long seed = node["seed"] ? node["seed"].as<long>() : 1;
   node["seed"] = seed + record - 1;
+  const io::TemporaryFile registered(scratch);  // removed if the run is interrupted
   {
     std::ofstream out(scratch);
     out << node << "\n";
@@ -211,7 +214,8 @@ std::unique_ptr<road::RoadInput> excitation_for(const Dataset& d, int record,
 // A strut rig dataset: each record a multisine displacement (record 1 in sine phase, record
 // k >= 2 with seeded random phases), the strut-test force at the truth plus Gaussian noise.
 void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double>& strut,
-                       const std::filesystem::path& dir, long seed_offset) {
+                       const std::filesystem::path& dir, const std::filesystem::path& out_dir,
+                       long seed_offset) {
   YAML::Node truth;
   truth["dataset"] = d.name;
   truth["kind"] = "strut_rig";
@@ -251,7 +255,7 @@ void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double
     const auto force = simulate::reference_strut_test_force(t, displacement, strut);
     std::normal_distribution<double> noise(0.0, d.noise_N);
     const std::string file = k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k);
-    io::write_atomically(dir / file, [&](std::ostream& out) {
+    io::write_atomically(out_dir / file, [&](std::ostream& out) {
       out << "time[s],displacement[mm],force[N]\n";
       for (std::size_t n = 0; n < samples; ++n) {
         out << fmt::format("{:.6g},{:.6g},{:.6g}\n", t[n], 1e3 * x[n],
@@ -262,7 +266,7 @@ void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double
     std::cerr << fmt::format("generate-hidden: {} ({:.0f} s at {:g} Hz)\n", (dir / file).string(),
                              t.back(), d.sample_rate_Hz);
   }
-  io::write_atomically(dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
+  io::write_atomically(out_dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
     out << "# The truth behind " << d.name
         << " (ridefit generate-hidden): not to be read by the diagnosis\n"
         << truth << "\n";
@@ -328,10 +332,14 @@ void run(const GenerateHiddenFlags& flags) {
   }
   io::prepare_output_directory(flags.output_dir, "-o");
   const std::filesystem::path dir = flags.output_dir;
+  // Written into a staged copy of the folder, put in place as a whole; paths in the truth files
+  // are relative to the folder itself.
+  io::StagedFolder staged(dir, files);
+  const std::filesystem::path out_dir = staged.path();
   for (std::size_t i = 0; i < datasets.size(); ++i) {
     const Dataset& d = datasets[i];
     if (d.strut_rig) {
-      write_rig_dataset(d, struts[i], dir, flags.seed_offset);
+      write_rig_dataset(d, struts[i], dir, out_dir, flags.seed_offset);
       continue;
     }
     YAML::Node truth;
@@ -353,7 +361,7 @@ void run(const GenerateHiddenFlags& flags) {
     }
     for (int k = 1; k <= d.records; ++k) {
       const auto road = excitation_for(
-          d, k, dir / fmt::format(".road_{}.yaml.tmp{}", d.name, static_cast<long>(getpid())));
+          d, k, out_dir / fmt::format(".road_{}.yaml.tmp{}", d.name, static_cast<long>(getpid())));
       simulate::SimulationOptions options;
       options.output_rate_Hz = d.sample_rate_Hz;
       options.duration_s = d.duration_s;
@@ -372,7 +380,7 @@ void run(const GenerateHiddenFlags& flags) {
       const auto wheel = study::measure(run.wheel_acc_m_per_s2, d.sample_rate_Hz,
                                         d.mount_channel == "wheel_acc" ? mounted : plain, rng);
       const std::string file = k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k);
-      io::write_atomically(dir / file, [&](std::ostream& out) {
+      io::write_atomically(out_dir / file, [&](std::ostream& out) {
         out << "time[s],road[m],body_acc[m/s^2],wheel_acc[m/s^2]\n";
         for (std::size_t n = 0; n < run.time_s.size(); ++n) {
           out << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g}\n", run.time_s[n], run.road_m[n], body[n],
@@ -383,13 +391,13 @@ void run(const GenerateHiddenFlags& flags) {
       std::cerr << fmt::format("generate-hidden: {} ({:.0f} s at {:g} Hz)\n", (dir / file).string(),
                                run.time_s.back(), d.sample_rate_Hz);
     }
-    io::write_atomically(dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
+    io::write_atomically(out_dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
       out << "# The truth behind " << d.name
           << " (ridefit generate-hidden): not to be read by the diagnosis\n"
           << truth << "\n";
     });
   }
-  io::finish_output_folder(dir, files);
+  staged.commit();
 }
 
 }  // namespace

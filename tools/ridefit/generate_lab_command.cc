@@ -21,6 +21,7 @@
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/output_paths.h"
+#include "ridefit/io/staged_folder.h"
 #include "ridefit/model/strut_test.h"
 #include "ridefit/simulate/strut_test_reference.h"
 #include "subcommands.h"
@@ -135,7 +136,9 @@ void run(const GenerateLabFlags& flags) {
       "shim_4mm.csv",           "semi_active_random.csv", "truth.yaml"};
   io::RunOutputs({}).add_folder(flags.output_dir, "DIR", files, flags.force);
   io::prepare_output_directory(flags.output_dir, "DIR");
-  const std::filesystem::path dir(flags.output_dir);
+  // Written into a staged copy of the folder, put in place as a whole.
+  io::StagedFolder staged(flags.output_dir, files);
+  const std::filesystem::path dir = staged.path();
   std::mt19937_64 rng(flags.seed);
   std::vector<double> t;
   for (int k = 0; k <= 10 * 12 * 200; ++k) t.push_back(k / 200.0);
@@ -166,7 +169,7 @@ void run(const GenerateLabFlags& flags) {
         "  command_lag_s: 0.012\n",
         flags.seed, kOffset_N, kNoise_N, kQuantum_N);
   });
-  io::finish_output_folder(dir, files);
+  staged.commit();
   std::cout << "Rig tests written to " << flags.output_dir << "\n";
 }
 

@@ -112,7 +112,7 @@ void remove_stale_temporaries(const fs::path& dir, const std::string& target) {
     const long owner = temporary_owner(name);
     if (owner == 0 || owner == static_cast<long>(getpid()) || process_runs(owner)) continue;
     std::error_code ignored;
-    fs::remove(entry.path(), ignored);
+    fs::remove_all(entry.path(), ignored);  // a staged folder (staged_folder.h) too
   }
 }
 

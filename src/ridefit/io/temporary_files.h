@@ -43,8 +43,8 @@ class ChildProcess {
 // or 0 when `filename` is none of them.
 long temporary_owner(const std::string& filename);
 
-// Removes, in `dir`, the temporaries of `target` (a file name in `dir`; empty: of any file)
-// whose process no longer runs: what a killed run left behind.
+// Removes, in `dir`, the temporaries (files, and staged folders `.NAME.tmpPID`) of `target` (a file
+// name in `dir`; empty: of any file) whose process no longer runs: what a killed run left behind.
 void remove_stale_temporaries(const std::filesystem::path& dir, const std::string& target = "");
 
 }  // namespace ridefit::io
