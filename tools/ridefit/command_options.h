@@ -58,8 +58,8 @@ class ProgressReporter {
 };
 
 // The output sample rate of a simulation against what it can give: at least two samples over
-// `duration_s`, and no rate above kMaxOutputRate_Hz nor, with the fixed-step rk4, above one
-// sample per step (the solver has nothing between its steps). InputError naming --rate.
+// `duration_s`, and no rate above kMaxOutputRate_Hz. InputError naming --rate. (rk4 with a
+// step longer than the output interval is refused by the integrator itself.)
 inline constexpr double kMaxOutputRate_Hz = 1e5;
 void check_output_rate(double rate_Hz, double duration_s, const SolverFlags& solver);
 

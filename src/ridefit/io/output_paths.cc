@@ -78,6 +78,11 @@ void RunOutputs::add_plot(const fs::path& path, const std::string& flag) {
 
 void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
                             const std::vector<std::string>& files, bool force) {
+  for (const auto& input : inputs_) {
+    if (same_file(input, dir)) {
+      throw InputError(fmt::format("{} {}: that is an input of this run", flag, dir.string()));
+    }
+  }
   if (fs::exists(dir) && !fs::is_directory(dir)) {
     throw InputError(fmt::format("{} {}: exists and is not a directory", flag, dir.string()));
   }
@@ -91,9 +96,6 @@ void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
     }
   }
   for (const auto& input : inputs_) {
-    if (same_file(input, dir)) {
-      throw InputError(fmt::format("{} {}: that is an input of this run", flag, dir.string()));
-    }
     for (const auto& name : files) {
       if (same_file(input, dir / name)) {
         throw InputError(fmt::format(
