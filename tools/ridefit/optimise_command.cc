@@ -363,7 +363,11 @@ void run(const OptimiseFlags& flags) {
                                             opt::metric_names(study.kind).size()};
   std::optional<opt::EvaluationJournal> journal;
   if (!flags.resume_file.empty()) {
-    journal.emplace(opt::EvaluationJournal::resume(journal_path, fingerprint, shape));
+    try {
+      journal.emplace(opt::EvaluationJournal::resume(journal_path, fingerprint, shape));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--resume: {}", e.what()));
+    }
   } else {
     try {
       journal.emplace(opt::EvaluationJournal::create(journal_path, fingerprint, flags.force));

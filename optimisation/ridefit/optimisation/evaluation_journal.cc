@@ -151,10 +151,10 @@ EvaluationJournal EvaluationJournal::create(const std::filesystem::path& path,
 EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
                                             const std::string& fingerprint, const Shape& shape) {
   if (std::filesystem::is_directory(path)) {
-    throw InputError(fmt::format("--resume {}: is a directory, not a journal file", path.string()));
+    throw InputError(fmt::format("journal {}: is a directory, not a journal file", path.string()));
   }
   if (!std::filesystem::is_regular_file(path)) {
-    throw InputError(fmt::format("--resume {}: no such journal file", path.string()));
+    throw InputError(fmt::format("journal {}: no such journal file", path.string()));
   }
   const int fd = lock_journal(path);
   struct Unlock {
@@ -172,24 +172,24 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
   // Line 1 first: nothing is touched unless this is the study's own journal.
   nlohmann::json header;
   if (!std::getline(lines, line) || line.empty()) {
-    throw InputError(fmt::format("--resume {}: the journal is empty (or its first line is torn)",
-                                 path.string()));
+    throw InputError(
+        fmt::format("journal {}: the journal is empty (or its first line is torn)", path.string()));
   }
   try {
     header = nlohmann::json::parse(line);
   } catch (const nlohmann::json::exception&) {
     throw InputError(
-        fmt::format("--resume {}: line 1 is not JSON; is this a ridefit journal?", path.string()));
+        fmt::format("journal {}: line 1 is not JSON; is this a ridefit journal?", path.string()));
   }
   if (!header.is_object() || header.value("format", "") != kFormat) {
-    throw InputError(fmt::format(
-        "--resume {}: not a ridefit optimise journal (line 1 has no \"format\": \"{}\")",
-        path.string(), kFormat));
+    throw InputError(
+        fmt::format("journal {}: not a ridefit optimise journal (line 1 has no \"format\": \"{}\")",
+                    path.string(), kFormat));
   }
   if (header.value("study", "") != fingerprint) {
     throw InputError(fmt::format(
-        "--resume {}: the journal belongs to another study or to different model or road "
-        "files (fingerprint {} here, {} in the journal); start without --resume",
+        "journal {}: the journal belongs to another study or to different model or road "
+        "files (fingerprint {} here, {} in the journal); start a new journal",
         path.string(), fingerprint, header.value("study", "")));
   }
   std::map<std::string, JournalRecord> records;
@@ -197,7 +197,7 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
   while (std::getline(lines, line)) {
     ++number;
     auto bad = [&](const std::string& why) {
-      return InputError(fmt::format("--resume {}: line {} is not an evaluation of this study ({})",
+      return InputError(fmt::format("journal {}: line {} is not an evaluation of this study ({})",
                                     path.string(), number, why));
     };
     if (line == kFinished) continue;
@@ -228,7 +228,7 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
   }
   if (complete < text.size()) std::filesystem::resize_file(path, complete);
   std::ofstream out(path, std::ios::app);
-  if (!out) throw InputError(fmt::format("--resume {}: cannot be appended to", path.string()));
+  if (!out) throw InputError(fmt::format("journal {}: cannot be appended to", path.string()));
   EvaluationJournal journal(path, std::move(out), fd);
   unlock.fd = -1;
   journal.records_ = std::move(records);
