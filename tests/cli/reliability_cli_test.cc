@@ -327,6 +327,15 @@ TEST(ReliabilityCli, GenerateHiddenRefusesFrequenciesAtOrAboveNyquist) {
   EXPECT_TRUE(contains(run.output, "Nyquist")) << run.output;
   EXPECT_TRUE(contains(run.output, "frequencies_Hz")) << run.output;
   EXPECT_FALSE(fs::exists(dir.path() / "o" / "gas.csv"));
+  // A vehicle dataset driven by a sweep up to 30 Hz, recorded at 50 Hz.
+  const auto sweep = dir.write(
+      "sweep.yaml",
+      "datasets:\n  - name: lift\n    model: " + dataset("hidden/baselines/passat_slip.yaml") +
+          "\n    excitation: " + dataset("excitations/sweep_2mm.yaml") +
+          "\n    duration_s: 4\n    sample_rate_Hz: 50\n");
+  const auto vehicle = run_cli("generate-hidden " + sweep + " -o " + (dir.path() / "v").string());
+  EXPECT_EQ(vehicle.exit_code, 2) << vehicle.output;
+  EXPECT_TRUE(contains(vehicle.output, "sweeps up to 30 Hz")) << vehicle.output;
 }
 
 // 9. Duplicate forces.
@@ -371,6 +380,17 @@ TEST(ReliabilityCli, OptimiseNamesAMisspeltDesignParameterAsUnknownWithTheCloses
     EXPECT_TRUE(contains(run.output, "unknown parameter 'damping_Ns_per_mm'")) << run.output;
     EXPECT_TRUE(contains(run.output, "closest: damping_Ns_per_m")) << run.output;
   }
+}
+
+TEST(ReliabilityCli, SweepNamesTheClosestKeysOfAMisspeltAxisParameter) {
+  TempDir dir("ridefit_reliability");
+  const auto study = dir.write(
+      "study.yaml", "model: " + dataset("vehicles/ajayi_half_car.yaml") +
+                        "\nroads:\n  smooth: " + dataset("excitations/smooth_road_seed001.yaml") +
+                        "\nvary:\n  - {parameter: front.dampng_Ns_per_m, values: [1000, 2000]}\n");
+  const auto run = run_cli("sweep " + study);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_TRUE(contains(run.output, "closest: front.damping_Ns_per_m")) << run.output;
 }
 
 TEST(ReliabilityCli, LibraryMessagesDoNotNameFlagsTheCommandDoesNotHave) {

@@ -54,6 +54,7 @@
 #include "ridefit/io/temporary_files.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/road/excitation_file.h"
+#include "ridefit/road/log_sweep.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
 #include "ridefit/simulate/strut_test_reference.h"
 #include "ridefit/study/sensor_model.h"
@@ -151,6 +152,27 @@ Dataset read_dataset(const io::YamlMap& d) {
     out.excitation = d.file("excitation");
     out.duration_s = d.has("duration_s") ? d.positive("duration_s") : 0.0;
     out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 500.0;
+    // A sweep up to a frequency the records cannot hold would alias into the band.
+    YAML::Node excitation;
+    try {
+      excitation = YAML::LoadFile(out.excitation.string());
+    } catch (const YAML::Exception&) {
+      // Malformed: the excitation's loader names what is wrong, later.
+    }
+    if (excitation.IsMap() && excitation["type"] &&
+        excitation["type"].as<std::string>() == "log_sweep" &&
+        (!excitation["end_frequency_Hz"] || excitation["end_frequency_Hz"].IsScalar())) {
+      const double end_Hz = excitation["end_frequency_Hz"]
+                                ? excitation["end_frequency_Hz"].as<double>()
+                                : road::LogSweepParameters{}.end_frequency_Hz;
+      if (end_Hz >= 0.5 * out.sample_rate_Hz) {
+        throw InputError(fmt::format(
+            "{}: the excitation {} sweeps up to {:g} Hz, at or above the Nyquist frequency "
+            "({:g} Hz at sample_rate_Hz {:g}); give a sample rate above {:g} Hz",
+            d.locate("excitation"), out.excitation.string(), end_Hz, 0.5 * out.sample_rate_Hz,
+            out.sample_rate_Hz, 2.0 * end_Hz));
+      }
+    }
   }
   out.records = static_cast<int>(d.has("records") ? d.integer("records") : 2);
   if (out.records < 1 || out.records > 20) {

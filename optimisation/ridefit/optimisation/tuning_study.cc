@@ -65,24 +65,6 @@ std::optional<double> model_value(const std::filesystem::path& model, const std:
   }
 }
 
-// The dotted keys of the model file's numbers (for "closest" suggestions).
-void numeric_keys(const YAML::Node& node, const std::string& prefix,
-                  std::vector<std::string>& out) {
-  if (!node.IsMap()) return;
-  for (const auto& item : node) {
-    const std::string key = prefix + item.first.as<std::string>();
-    if (item.second.IsMap()) {
-      numeric_keys(item.second, key + ".", out);
-    } else if (item.second.IsScalar()) {
-      try {
-        item.second.as<double>();
-        out.push_back(key);
-      } catch (const YAML::Exception&) {
-      }
-    }
-  }
-}
-
 // A design parameter must be a number of the model: the topology is not, and a misspelt key
 // is named as an unknown parameter with the closest names.
 void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const std::string& key) {
@@ -93,8 +75,7 @@ void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const 
         "such as damping_Ns_per_m (a setting goes under the study's model settings)",
         entry.locate("parameter"), key));
   }
-  std::vector<std::string> candidates;
-  numeric_keys(YAML::LoadFile(study.model_file.string()), "", candidates);
+  std::vector<std::string> candidates = io::yaml_number_keys(study.model_file);
   bool known = false;
   if (study.kind == ModelKind::kQuarterCar) {
     known = model::quarter_car_parameter_index(key).has_value();

@@ -1,5 +1,7 @@
 #include "ridefit/io/closest_names.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <algorithm>
 #include <cctype>
 #include <set>
@@ -25,7 +27,32 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+void number_keys(const YAML::Node& node, const std::string& prefix, std::vector<std::string>& out) {
+  if (!node.IsMap()) return;
+  for (const auto& item : node) {
+    const std::string key = prefix + item.first.as<std::string>();
+    if (item.second.IsMap()) {
+      number_keys(item.second, key + ".", out);
+    } else if (item.second.IsScalar()) {
+      try {
+        item.second.as<double>();
+        out.push_back(key);
+      } catch (const YAML::Exception&) {
+      }
+    }
+  }
+}
+
 }  // namespace
+
+std::vector<std::string> yaml_number_keys(const std::filesystem::path& yaml_file) {
+  std::vector<std::string> keys;
+  try {
+    number_keys(YAML::LoadFile(yaml_file.string()), "", keys);
+  } catch (const YAML::Exception&) {
+  }
+  return keys;
+}
 
 std::vector<std::string> closest_names(const std::string& name,
                                        const std::vector<std::string>& candidates,

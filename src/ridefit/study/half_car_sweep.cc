@@ -10,6 +10,7 @@
 #include <memory>
 #include <set>
 
+#include "ridefit/io/closest_names.h"
 #include "ridefit/io/half_car_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/yaml_map.h"
@@ -31,8 +32,9 @@ SweepAxis read_axis(const io::YamlMap& entry, const std::filesystem::path& model
     if (!io::half_car_has_key(model, key)) {
       throw InputError(fmt::format(
           "{}: '{}' is not a key of model {} (give the dotted path of a numeric key, e.g. "
-          "front.damping_Ns_per_m)",
-          entry.locate("parameter"), key, model.string()));
+          "front.damping_Ns_per_m){}",
+          entry.locate("parameter"), key, model.string(),
+          io::closest_names_text(key, io::yaml_number_keys(model))));
     }
   }
   axis.name = entry.has("name") ? entry.text("name") : axis.keys.front();
