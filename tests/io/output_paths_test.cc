@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "ridefit/io/closest_names.h"
+#include "ridefit/io/staged_folder.h"
 #include "support/temp_dir.h"
 #include "support/throws_input_error.h"
 
@@ -68,6 +69,36 @@ TEST(RunOutputs, AFolderIsRefusedWhenItHoldsFilesRidefitDidNotWriteThere) {
         RunOutputs({}).add_folder(out, "-o", {"a.csv", "a.csv"}, true);
       },
       "twice"));
+}
+
+TEST(StagedFolder, CommitsAsAWholeKeepsOtherFilesAndLeavesNothingWhenNotCommitted) {
+  TempDir dir("ridefit_outputs");
+  const auto real = dir.path() / "real";
+  fs::create_directories(real / "sub");
+  std::ofstream(real / "a.txt") << "kept";
+  std::ofstream(real / "report.md") << "old";
+  std::ofstream(real / "sub" / "b.txt") << "deep";
+  fs::create_directory_symlink(real, dir.path() / "alias");
+  {
+    StagedFolder staged(dir.path() / "alias", {"report.md"});
+    EXPECT_NE(staged.path(), real);
+    std::ofstream(staged.path() / "report.md") << "new";
+    EXPECT_EQ(testing::text_of(real / "report.md"), "old");  // nothing visible yet
+  }  // not committed: as it was, and no staging folder left
+  EXPECT_EQ(testing::text_of(real / "report.md"), "old");
+  std::size_t entries = 0;
+  for (const auto& entry : fs::directory_iterator(dir.path())) entries += entry.exists() ? 1 : 0;
+  EXPECT_EQ(entries, 2u);  // real and alias
+  {
+    StagedFolder staged(dir.path() / "alias", {"report.md"});
+    std::ofstream(staged.path() / "report.md") << "new";
+    staged.commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(dir.path() / "alias"));
+  EXPECT_EQ(testing::text_of(real / "report.md"), "new");
+  EXPECT_EQ(testing::text_of(real / "a.txt"), "kept");
+  EXPECT_EQ(testing::text_of(real / "sub" / "b.txt"), "deep");
+  EXPECT_NE(testing::text_of(real / kOutputManifest).find("report.md"), std::string::npos);
 }
 
 TEST(ClosestNames, SuggestsTheNearestNamesAndNothingFarAway) {

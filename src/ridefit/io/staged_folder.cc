@@ -55,7 +55,9 @@ void carry_over(const fs::path& from, const fs::path& to) {
 }  // namespace
 
 StagedFolder::StagedFolder(const fs::path& dir, const std::vector<std::string>& files)
-    : dir_(fs::absolute(dir).lexically_normal()), files_(files) {
+    : dir_(fs::weakly_canonical(fs::absolute(dir))), files_(files) {
+  // Resolved: a symbolic link to the folder keeps pointing at it; the swap happens where the
+  // files are.
   if (!dir_.has_filename()) dir_ = dir_.parent_path();  // a trailing slash
   const fs::path parent = dir_.parent_path();
   if (dir_.filename().empty() || dir_ == parent || holds_working_directory(dir_)) {
