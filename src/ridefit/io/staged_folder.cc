@@ -78,11 +78,20 @@ StagedFolder::StagedFolder(const fs::path& dir, const std::vector<std::string>& 
                                  staging_.string(), ec.message()));
   }
   if (fs::is_directory(dir_)) {
-    const std::set<std::string> written(files.begin(), files.end());
-    for (const auto& entry : fs::directory_iterator(dir_)) {
-      const std::string name = entry.path().filename().string();
-      if (written.count(name) != 0 || is_ridefit_temporary(name)) continue;
-      carry_over(entry.path(), staging_ / name);
+    try {
+      const std::set<std::string> written(files.begin(), files.end());
+      for (const auto& entry : fs::directory_iterator(dir_)) {
+        const std::string name = entry.path().filename().string();
+        if (written.count(name) != 0 || is_ridefit_temporary(name)) continue;
+        carry_over(entry.path(), staging_ / name);
+      }
+    } catch (const fs::filesystem_error& e) {
+      std::error_code ignored;
+      fs::remove_all(staging_, ignored);
+      throw InputError(fmt::format(
+          "-o {}: cannot carry its other files over into the new folder ({}); choose a new or "
+          "empty folder",
+          dir_.string(), e.what()));
     }
   }
 }
