@@ -172,7 +172,11 @@ TEST_F(AnalyseCli, BadInputsAreNamedWithExitCode2AndNoOutput) {
   expect_bad_input(write("slow.csv",
                          [] {
                            std::string text = "time[s],body_acc[m/s^2]\n";
-                           for (int i = 0; i < 400; ++i) text += std::to_string(i * 0.01) + ",1\n";
+                           for (int i = 0; i < 400; ++i) {
+                             // Varying: a constant channel is refused before its rate is looked at.
+                             text += std::to_string(i * 0.01) + "," +
+                                     std::to_string(std::sin(0.3 * i)) + "\n";
+                           }
                            return text;
                          }()),
                    "500 Hz");

@@ -107,9 +107,19 @@ TEST_F(Cli, SimulateWritesUnitAnnotatedCsvAndJsonStatistics) {
 
 TEST_F(Cli, FrictionStudyRunsAndWritesPsds) {
   const CliRun run = run_cli("friction-study " + model() + " " + short_sweep() +
-                             " --coulomb-forces 0,60 --rate 200 -o " + dir_.string());
+                             " --coulomb-forces 0,60 --rate 200 -o " + (dir_ / "out").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "sweep_psd.csv"));
+  // dir_ holds the inputs (files ridefit did not write there): refused without --force, and
+  // with it the inputs stay beside the PSDs.
+  const CliRun beside = run_cli("friction-study " + model() + " " + short_sweep() +
+                                " --coulomb-forces 0,60 --rate 200 -o " + dir_.string());
+  EXPECT_EQ(beside.exit_code, 2) << beside.output;
+  const CliRun forced = run_cli("friction-study " + model() + " " + short_sweep() +
+                                " --coulomb-forces 0,60 --rate 200 --force -o " + dir_.string());
+  ASSERT_EQ(forced.exit_code, 0) << forced.output;
   EXPECT_TRUE(fs::exists(dir_ / "sweep_psd.csv"));
+  EXPECT_TRUE(fs::exists(short_sweep()));
   EXPECT_NE(run.output.find("body_pk"), std::string::npos);
 }
 

@@ -100,7 +100,9 @@ TEST_F(FitCli, BadInputsExitWith2AndWriteNothing) {
       "force");
   std::string constant = "time[s],displacement[mm],force[N]\n";
   for (int k = 0; k < 50; ++k) constant += std::to_string(k * 0.01) + ",1.5,3\n";
-  expect_bad(write("constant.csv", constant) + m + " --free coulomb_force_N", "never moves");
+  // Refused as it is read (issue 16), naming the channel.
+  expect_bad(write("constant.csv", constant) + m + " --free coulomb_force_N",
+             "constant.csv: channel displacement carries no signal");
 }
 
 TEST_F(FitCli, AFitThatDoesNotConvergeExits1WithoutAModel) {

@@ -111,6 +111,50 @@ TEST(EvaluationJournal, WrongShapesAreInputErrorsAndOtherFilesAreNeverTouched) {
       [&] { EvaluationJournal::resume(dir.path(), "abc", kShape); }, "is a directory"));
 }
 
+TEST(EvaluationJournal, IsLockedWhileARunHoldsIt) {
+  testing::TempDir dir("ridefit_journal");
+  const auto path = dir.path() / "run.journal";
+  auto journal = EvaluationJournal::create(path, "abc");
+  journal.append(record(1.0));
+  // A second writer (here in the same process: a flock belongs to an open file) is refused and
+  // the journal is left as it was.
+  const auto size = std::filesystem::file_size(path);
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::create(path, "abc", true); },
+                                          "in use by"));
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::resume(path, "abc", kShape); },
+                                          "in use by"));
+  EXPECT_EQ(std::filesystem::file_size(path), size);
+}
+
+TEST(EvaluationJournal, AJournalOfAnUnfinishedRunIsReplacedOnlyWhenAskedTo) {
+  testing::TempDir dir("ridefit_journal");
+  const auto path = dir.path() / "run.journal";
+  {
+    auto journal = EvaluationJournal::create(path, "abc");
+    journal.append(record(1.0));
+    journal.append(record(2.0));
+  }
+  const auto size = std::filesystem::file_size(path);
+  EXPECT_TRUE(testing::throws_input_error([&] { EvaluationJournal::create(path, "abc"); },
+                                          "holds 2 evaluations"));
+  EXPECT_EQ(std::filesystem::file_size(path), size);
+  {
+    // Resumed and finished: the finished mark is skipped by resume, and a new run may replace it.
+    auto journal = EvaluationJournal::resume(path, "abc", kShape);
+    EXPECT_EQ(journal.size(), 2u);
+    journal.mark_finished();
+  }
+  EXPECT_EQ(EvaluationJournal::resume(path, "abc", kShape).size(), 2u);
+  { EvaluationJournal::create(path, "abc"); }
+  EXPECT_EQ(EvaluationJournal::resume(path, "abc", kShape).size(), 0u);
+  {
+    auto journal = EvaluationJournal::create(path, "abc");
+    journal.append(record(3.0));
+  }
+  { EvaluationJournal::create(path, "abc", true); }  // --force
+  EXPECT_EQ(EvaluationJournal::resume(path, "abc", kShape).size(), 0u);
+}
+
 TEST(StudyFingerprint, ChangesWithTheModelFile) {
   testing::TempDir dir("ridefit_journal");
   std::ifstream in(testing::dataset("vehicles/passat_b8_front.yaml"));

@@ -13,6 +13,7 @@
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/study/recording_analysis.h"
 #include "subcommands.h"
@@ -286,12 +287,9 @@ io::Figure figure_of(const study::RecordingAnalysis& analysis, const AnalyseFlag
 void run(const AnalyseFlags& flags) {
   std::vector<std::filesystem::path> inputs(flags.files.begin(), flags.files.end());
   if (!flags.model_file.empty()) inputs.push_back(flags.model_file);
-  if (!flags.psd_file.empty()) io::check_output_file(flags.psd_file, inputs, "--psd");
-  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
-  if (!flags.psd_file.empty() && !flags.plot_file.empty() &&
-      std::filesystem::absolute(flags.psd_file) == std::filesystem::absolute(flags.plot_file)) {
-    throw InputError("--psd and --plot name the same file; choose two");
-  }
+  io::RunOutputs outputs(inputs);
+  outputs.add_file(flags.psd_file, "--psd");
+  outputs.add_plot(flags.plot_file, "--plot");
   const study::RecordingAnalysisOptions options = options_from(flags);
   if (flags.level_name.empty() ||
       flags.level_name.find_first_not_of(

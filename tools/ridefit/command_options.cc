@@ -119,6 +119,24 @@ simulate::IntegratorOptions SolverFlags::options() const {
   return options;
 }
 
+void check_output_rate(double rate_Hz, double duration_s, const SolverFlags& solver) {
+  // (rk4 with a step longer than the output interval is refused by the integrator.)
+  (void)solver;
+  if (rate_Hz > kMaxOutputRate_Hz) {
+    throw InputError(fmt::format(
+        "--rate {:g} Hz: output samples more than {:g} per second resolve nothing the solvers "
+        "compute for a vehicle; give a rate up to {:g} Hz",
+        rate_Hz, kMaxOutputRate_Hz, kMaxOutputRate_Hz));
+  }
+  const double samples = std::floor(duration_s * rate_Hz + 1e-9) + 1.0;
+  if (samples < 2.0) {
+    throw InputError(fmt::format(
+        "--rate {:g} Hz over {:g} s gives {:g} output sample; give at least two: a rate of at "
+        "least {:g} Hz or a longer duration",
+        rate_Hz, duration_s, samples, 1.0 / duration_s));
+  }
+}
+
 std::vector<std::pair<std::string, std::string>> parse_key_values(
     const std::vector<std::string>& entries) {
   std::vector<std::pair<std::string, std::string>> pairs;
@@ -146,6 +164,35 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& en
     overrides[key] = value;
   }
   return overrides;
+}
+
+std::string with_override_origin(std::string message, const std::string& origin) {
+  const std::string marker = io::kOverrideMarker;
+  for (auto at = message.find(marker); at != std::string::npos;
+       at = message.find(marker, at + origin.size())) {
+    message.replace(at, marker.size(), origin);
+  }
+  return message;
+}
+
+io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
+                                             const std::vector<std::string>& set_entries,
+                                             const std::string& damper_state,
+                                             const std::string& state_flag) {
+  const std::map<std::string, double> overrides = parse_overrides(set_entries);
+  for (const auto& [key, value] : overrides) {
+    if (key == "damper_state" || key == "model") {
+      throw InputError(fmt::format(
+          "--set {}: not a number key; {}", key,
+          state_flag.empty() ? std::string("this command chooses the damper's topology itself")
+                             : fmt::format("use {} for the topology", state_flag)));
+    }
+  }
+  try {
+    return io::load_quarter_car(model_file, overrides, damper_state);
+  } catch (const InputError& e) {
+    throw InputError(with_override_origin(e.what(), "given on the command line as --set "));
+  }
 }
 
 nlohmann::json to_json(const simulate::SolverStatistics& statistics) {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "ridefit/io/quarter_car_file.h"
 #include "ridefit/simulate/integrator.h"
 
 namespace ridefit::cli {
@@ -56,12 +57,30 @@ class ProgressReporter {
   bool tty_;
 };
 
+// The output sample rate of a simulation against what it can give: at least two samples over
+// `duration_s`, and no rate above kMaxOutputRate_Hz. InputError naming --rate. (rk4 with a
+// step longer than the output interval is refused by the integrator itself.)
+inline constexpr double kMaxOutputRate_Hz = 1e5;
+void check_output_rate(double rate_Hz, double duration_s, const SolverFlags& solver);
+
 // `--set key=value` entries as (key, value text); a malformed entry is an InputError.
 std::vector<std::pair<std::string, std::string>> parse_key_values(
     const std::vector<std::string>& entries);
 
 // `--set key=value` overrides of numeric model keys; a malformed entry is an InputError.
 std::map<std::string, double> parse_overrides(const std::vector<std::string>& entries);
+
+// io::load_quarter_car with `--set` entries: the library's messages about an override name the
+// flag here. `state_flag` is the command's flag for the topology (e.g. "--damper-state"), or ""
+// when the command sets it itself; --set damper_state (or model) points to it.
+io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
+                                             const std::vector<std::string>& set_entries,
+                                             const std::string& damper_state,
+                                             const std::string& state_flag);
+
+// `message` with every io::kOverrideMarker replaced by `origin` (e.g. "given on the command line
+// as --set ").
+std::string with_override_origin(std::string message, const std::string& origin);
 
 nlohmann::json to_json(const simulate::SolverStatistics& statistics);
 

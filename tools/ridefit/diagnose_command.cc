@@ -11,6 +11,8 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,9 @@
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
 #include "ridefit/model/quarter_car_parameter_names.h"
 #include "ridefit/road/road_input.h"
 #include "subcommands.h"
@@ -126,16 +130,42 @@ nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string&
   return rounds;
 }
 
-void check_output_is_not_an_input(const DiagnoseFlags& flags) {
+void require_finite_report(const std::string& text, const std::filesystem::path& path) {
+  static const std::regex non_finite(R"((^|[^A-Za-z_/.])[-+]?(nan|inf)([^A-Za-z_/.]|$))",
+                                     std::regex::icase);
+  std::smatch match;
+  if (std::regex_search(text, match, non_finite)) {
+    const auto at = static_cast<std::size_t>(match.position(0));
+    const std::size_t line_start =
+        text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
+    const std::size_t line_end = std::min(text.find('\n', at), text.size());
+    throw RunError(fmt::format(
+        "{} would show a value that is not a number, in: {}; nothing was written (the data may "
+        "be degenerate: check the records)",
+        path.string(), text.substr(line_start, line_end - line_start)));
+  }
+}
+
+std::vector<std::string> check_output_folder(const DiagnoseFlags& flags,
+                                             const std::string& figure) {
+  for (std::size_t i = 0; i < flags.records.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (io::same_file(flags.records[i], flags.records[j])) {
+        throw InputError(fmt::format(
+            "{} is given twice; a record judging the fit must not be the one fitted (give "
+            "another record, or one record to be split in halves)",
+            flags.records[i]));
+      }
+    }
+  }
   std::vector<std::filesystem::path> inputs{flags.model_file};
   for (const auto& f : flags.records) inputs.push_back(f);
   for (const auto& f : flags.excitations) inputs.push_back(f);
-  for (const auto& input : inputs) {
-    std::error_code ec;
-    if (std::filesystem::equivalent(input, flags.output_dir, ec)) {
-      throw InputError(fmt::format("-o {}: that is an input", flags.output_dir));
-    }
-  }
+  std::vector<std::string> files = {"report.md", "model.yaml"};
+  if (io::gnuplot_available()) files.push_back(figure);
+  io::RunOutputs outputs(inputs);
+  outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+  return files;
 }
 
 bool is_rig_record(const std::filesystem::path& csv_file) {
@@ -385,7 +415,7 @@ void run(const DiagnoseFlags& flags) {
   options.fit.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
   options.selection.threads = flags.threads;
 
-  check_output_is_not_an_input(flags);
+  const std::vector<std::string> files = check_output_folder(flags, "spectra.png");
   const std::filesystem::path dir = flags.output_dir;
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::PsdMeasurement> records;
@@ -432,13 +462,21 @@ void run(const DiagnoseFlags& flags) {
         if (!flags.quiet && !flags.json) std::cerr << "diagnose: " << line << "\n";
       });
 
-  if (figure) draw_spectra(result, dir / "spectra.png");
+  // The report first, in memory: a value that is not a number stops the run before any file
+  // is written.
+  std::ostringstream report;
+  write_report(report, flags, result, data, figure);
+  require_finite_report(report.str(), dir / "report.md");
+  // Written into a staged copy of the folder, put in place as a whole.
+  io::StagedFolder staged(dir, files);
+  const std::filesystem::path out = staged.path();
+  if (figure) draw_spectra(result, out / "spectra.png");
   const auto values = changed_keys(model_file.make_model(), result.final_model.car);
-  io::write_model_with_values(flags.model_file, values, dir / "model.yaml",
+  io::write_model_with_values(flags.model_file, values, out / "model.yaml",
                               fmt::format("{} by ridefit diagnose from {}: {}", flags.model_file,
                                           flags.records.front(), result.verdict));
-  io::write_atomically(dir / "report.md",
-                       [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
+  io::write_atomically(out / "report.md", [&](std::ostream& s) { s << report.str(); });
+  staged.commit();
 
   if (flags.json) {
     nlohmann::json j = {{"verdict", result.verdict},
@@ -526,6 +564,9 @@ void register_diagnose(CLI::App& app) {
   command->add_flag("--json", flags->json,
                     "Ranked effects, scores, parameters, the gap before and after");
   command->add_flag("-q,--quiet", flags->quiet, "No progress on stderr");
+  command->add_flag("--force", flags->force,
+                    "Write into an existing -o folder that holds files ridefit did not write "
+                    "there (files of the same name are replaced; inputs never are)");
   command->callback([flags] { run(*flags); });
 }
 

@@ -33,6 +33,7 @@ struct DiagnoseFlags {
   unsigned threads = 0;
   bool json = false;
   bool quiet = false;
+  bool force = false;
 };
 
 // --effects: all (empty) or ids separated by commas; InputError naming the library's ids.
@@ -50,8 +51,16 @@ void write_rounds(std::ostream& out, const dx::DiagnosisResult& r, const std::st
 nlohmann::json values_json(const std::vector<dx::FittedValue>& values);
 nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string& gap_key);
 
-// InputError when -o names one of the inputs (the model, a record, an excitation).
-void check_output_is_not_an_input(const DiagnoseFlags& flags);
+// RunError when the report's text shows a value that is not a number (nan, inf): a report never
+// presents one as a result. `path` names the report in the message.
+void require_finite_report(const std::string& text, const std::filesystem::path& path);
+
+// The files a diagnosis writes into -o (report.md, model.yaml and, with gnuplot on PATH,
+// `figure`), checked before any work (io::RunOutputs): none is an input (the model, a record,
+// an excitation), and an existing folder holding files ridefit did not write is refused
+// unless --force. Also refuses a record given twice (the held-out record would be the fitted
+// one). InputError naming -o or the record otherwise.
+std::vector<std::string> check_output_folder(const DiagnoseFlags& flags, const std::string& figure);
 
 // True when the CSV's header names a displacement column: a strut rig test (whose loader then
 // names any column it misses).

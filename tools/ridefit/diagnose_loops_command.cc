@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -20,7 +21,9 @@
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
 
 namespace ridefit::cli {
 namespace {
@@ -187,7 +190,7 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
   options.baseline_free = flags.free;
   options.selection.threads = flags.threads;
 
-  check_output_is_not_an_input(flags);
+  const std::vector<std::string> files = check_output_folder(flags, "loops.png");
   const std::filesystem::path dir = flags.output_dir;
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::HysteresisRecord> records;
@@ -214,15 +217,23 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
         if (!flags.quiet && !flags.json) std::cerr << "diagnose: " << line << "\n";
       });
 
-  if (figure) draw_loops(result, data, dir / "loops.png");
+  // The report first, in memory: a value that is not a number stops the run before any file
+  // is written.
+  std::ostringstream report;
+  write_report(report, flags, result, data, figure);
+  require_finite_report(report.str(), dir / "report.md");
+  // Written into a staged copy of the folder, put in place as a whole.
+  io::StagedFolder staged(dir, files);
+  const std::filesystem::path out = staged.path();
+  if (figure) draw_loops(result, data, out / "loops.png");
   const auto [keys, rig_only] = changed(baseline.strut, result.final_model.strut);
   io::write_model_with_values(
-      flags.model_file, keys, dir / "model.yaml",
+      flags.model_file, keys, out / "model.yaml",
       fmt::format("{} by ridefit diagnose from {}: {}{}", flags.model_file, flags.records.front(),
                   result.verdict,
                   rig_only.empty() ? "" : "\n# rig only (not model keys): " + rig_only));
-  io::write_atomically(dir / "report.md",
-                       [&](std::ostream& out) { write_report(out, flags, result, data, figure); });
+  io::write_atomically(out / "report.md", [&](std::ostream& s) { s << report.str(); });
+  staged.commit();
 
   if (flags.json) {
     auto regions = [](const std::vector<dx::LoopRegion>& list) {

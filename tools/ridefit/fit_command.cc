@@ -22,6 +22,7 @@
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/signal/hysteresis_friction.h"
 #include "subcommands.h"
@@ -111,10 +112,36 @@ void write_model(const std::string& model_file, model::StrutTestParameters<doubl
 }
 
 void run(const FitHysteresisFlags& flags) {
+  for (std::size_t i = 0; i < flags.files.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (io::same_file(flags.files[i], flags.files[j])) {
+        throw InputError(fmt::format(
+            "{} is given twice; a repeated record would count twice in the fit", flags.files[i]));
+      }
+    }
+  }
   std::vector<std::filesystem::path> inputs(flags.files.begin(), flags.files.end());
   inputs.push_back(flags.model_file);
-  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
-  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
+  // With per-file parameters and several files, one model per file: -o's stem + the file's.
+  std::vector<std::string> model_outputs;
+  if (!flags.output_file.empty()) {
+    if (flags.files.size() == 1 || flags.per_file.empty()) {
+      model_outputs.push_back(flags.output_file);
+    } else {
+      const std::filesystem::path out(flags.output_file);
+      for (const auto& file : flags.files) {
+        model_outputs.push_back((out.parent_path() / (out.stem().string() + "_" +
+                                                      std::filesystem::path(file).stem().string() +
+                                                      out.extension().string()))
+                                    .string());
+      }
+    }
+  }
+  io::RunOutputs outputs(inputs);
+  for (const auto& path : model_outputs) {
+    outputs.add_file(path, path == flags.output_file ? "-o" : "-o (a per-file model)");
+  }
+  outputs.add_plot(flags.plot_file, "--plot");
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::HysteresisRecord> records;
   for (const auto& file : flags.files) records.push_back(fitting::load_hysteresis_record(file));
@@ -122,6 +149,20 @@ void run(const FitHysteresisFlags& flags) {
   options.free = flags.free;
   options.per_file = flags.per_file;
   options.bounds = parse_bounds(flags.bounds);
+  // A bound only acts on a fitted parameter: one on a fixed parameter would be ignored.
+  for (const auto& [name, bound] : options.bounds) {
+    const bool fitted =
+        std::find(flags.free.begin(), flags.free.end(), name) != flags.free.end() ||
+        std::find(flags.per_file.begin(), flags.per_file.end(), name) != flags.per_file.end();
+    if (!fitted) {
+      std::string free;
+      for (const auto& f : flags.free) free += (free.empty() ? "" : ",") + f;
+      throw InputError(fmt::format(
+          "--bounds {}={}:{}: {} is not fitted (--free {}), so the bound would be ignored; add it "
+          "to --free or leave the bound out",
+          name, bound.first, bound.second, name, free));
+    }
+  }
   options.loss = flags.loss;
   options.loss_scale_N = flags.loss_scale_N;
   options.solver.relative_tolerance = flags.relative_tolerance;
@@ -177,20 +218,10 @@ void run(const FitHysteresisFlags& flags) {
   }
   std::vector<std::string> written;
   if (!flags.output_file.empty() && write_anyway) {
-    if (records.size() == 1 || flags.per_file.empty()) {
-      write_model(flags.model_file, fit.fitted.front(), flags.free, flags.output_file);
-      written.push_back(flags.output_file);
-    } else {
-      // Each file has its own values of the per-file parameters: one model per file.
-      const std::filesystem::path out(flags.output_file);
-      for (std::size_t r = 0; r < records.size(); ++r) {
-        const auto path =
-            out.parent_path() /
-            (out.stem().string() + "_" + std::filesystem::path(records[r].source).stem().string() +
-             out.extension().string());
-        write_model(flags.model_file, fit.fitted[r], flags.free, path.string());
-        written.push_back(path.string());
-      }
+    // Each file has its own values of the per-file parameters: one model per file.
+    for (std::size_t r = 0; r < model_outputs.size(); ++r) {
+      write_model(flags.model_file, fit.fitted[r], flags.free, model_outputs[r]);
+      written.push_back(model_outputs[r]);
     }
   }
   if (!flags.plot_file.empty()) {
@@ -312,8 +343,9 @@ struct FitPsdFlags {
 void run_psd(const FitPsdFlags& flags) {
   std::vector<std::filesystem::path> inputs = {flags.file, flags.model_file};
   if (!flags.excitation_file.empty()) inputs.push_back(flags.excitation_file);
-  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
-  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
+  io::RunOutputs outputs(inputs);
+  outputs.add_file(flags.output_file, "-o");
+  outputs.add_plot(flags.plot_file, "--plot");
   if (flags.band_Hz.size() != 2 || !(flags.band_Hz[0] < flags.band_Hz[1])) {
     throw InputError("--band: expected LOW,HIGH in Hz with LOW < HIGH, e.g. 0.5,30");
   }

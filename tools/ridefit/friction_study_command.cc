@@ -9,13 +9,16 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "command_options.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/study/friction_study.h"
 #include "subcommands.h"
@@ -28,6 +31,7 @@ struct FrictionStudyFlags {
   std::vector<std::string> excitation_files;
   std::vector<double> coulomb_forces_N = {0.0, 12.0, 30.0, 60.0, 120.0};
   std::string output_dir;
+  bool force = false;
   std::vector<std::string> overrides;
   double output_rate_Hz = 1000.0;
   bool json = false;
@@ -54,11 +58,20 @@ void write_psds(const study::FrictionStudyResult& result, const std::filesystem:
 
 void run(const FrictionStudyFlags& flags) {
   const auto model_file =
-      io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), "stick_slip");
+      load_quarter_car_with_set(flags.model_file, flags.overrides, "stick_slip", "");
+  std::set<std::string> labels;
   for (double f : flags.coulomb_forces_N) {
     if (!std::isfinite(f) || f < 0.0 || f > 1e5) {
       throw InputError(fmt::format(
           "--coulomb-forces: {} N; every force must be a finite number in [0, 1e5] N", f));
+    }
+    // Each force names its columns (body_acc_psd_Fc30N, ...): two alike would run twice and
+    // collide.
+    if (!labels.insert(force_label(f)).second) {
+      throw InputError(fmt::format(
+          "--coulomb-forces: {:g} N is given twice; give each force once (they name the PSD "
+          "columns, e.g. body_acc_psd_{})",
+          f, force_label(f)));
     }
   }
   for (const auto& [key, value] : parse_overrides(flags.overrides)) {
@@ -70,8 +83,12 @@ void run(const FrictionStudyFlags& flags) {
   // bad input never leaves part of the results behind.
   std::vector<std::unique_ptr<road::RoadInput>> roads;
   std::set<std::string> stems;
+  std::vector<std::string> files;
+  io::RunOutputs outputs({flags.model_file});
+  for (const auto& excitation_file : flags.excitation_files) outputs.add_input(excitation_file);
   for (const auto& excitation_file : flags.excitation_files) {
     roads.push_back(road::load_excitation(excitation_file));
+    check_output_rate(flags.output_rate_Hz, roads.back()->duration_s(), flags.solver);
     const std::string stem = std::filesystem::path(excitation_file).stem().string();
     if (!stems.insert(stem).second) {
       throw InputError(
@@ -79,8 +96,15 @@ void run(const FrictionStudyFlags& flags) {
                       "would write {}_psd.csv; rename one",
                       excitation_file, stem, stem));
     }
+    files.push_back(stem + "_psd.csv");
   }
-  if (!flags.output_dir.empty()) io::prepare_output_directory(flags.output_dir, "-o");
+  if (!flags.output_dir.empty()) {
+    outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+    io::prepare_output_directory(flags.output_dir, "-o");
+  }
+  // Written into a staged copy of the folder, put in place as a whole once every case ran.
+  std::optional<io::StagedFolder> staged;
+  if (!flags.output_dir.empty()) staged.emplace(flags.output_dir, files);
 
   study::FrictionStudyOptions options;
   options.coulomb_forces_N = flags.coulomb_forces_N;
@@ -106,7 +130,7 @@ void run(const FrictionStudyFlags& flags) {
     std::string psd_file;
     if (!flags.output_dir.empty()) {
       psd_file = (std::filesystem::path(flags.output_dir) / (stem + "_psd.csv")).string();
-      write_psds(result, psd_file);
+      write_psds(result, (staged->path() / (stem + "_psd.csv")).string());
     }
     nlohmann::json cases = nlohmann::json::array();
     if (!flags.json) {
@@ -141,6 +165,7 @@ void run(const FrictionStudyFlags& flags) {
     summary["excitations"].push_back(
         {{"excitation", excitation_file}, {"psd_file", psd_file}, {"cases", cases}});
   }
+  if (staged) staged->commit();
   if (!flags.json) {
     std::cout << "\nbody_pk: body-acceleration PSD peak in 0.5-6 Hz; wheel_pk: wheel PSD peak in "
                  "8-30 Hz;\nRMS in m/s^2; body_Wk: ISO 2631-1 Wk-weighted body RMS (needs --rate "
@@ -170,6 +195,9 @@ void register_friction_study(CLI::App& app) {
       ->capture_default_str();
   command->add_option("-o,--output-dir", flags->output_dir,
                       "Directory for the PSD CSV files (one per excitation)");
+  command->add_flag("--force", flags->force,
+                    "Write into an existing -o folder that holds files ridefit did not write "
+                    "there (files of the same name are replaced; inputs never are)");
   command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
       ->check(positive_number("Hz"))
       ->capture_default_str();

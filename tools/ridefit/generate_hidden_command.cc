@@ -39,6 +39,8 @@
 #include <random>
 #include <set>
 
+#include <unistd.h>
+
 #include <yaml-cpp/yaml.h>
 
 #include "command_options.h"
@@ -46,9 +48,13 @@
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/io/staged_folder.h"
+#include "ridefit/io/temporary_files.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/road/excitation_file.h"
+#include "ridefit/road/log_sweep.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
 #include "ridefit/simulate/strut_test_reference.h"
 #include "ridefit/study/sensor_model.h"
@@ -61,6 +67,7 @@ struct GenerateHiddenFlags {
   std::string spec_file;
   std::string output_dir;
   long seed_offset = 0;
+  bool force = false;
 };
 
 struct Dataset {
@@ -71,6 +78,8 @@ struct Dataset {
   std::filesystem::path model;
   std::string damper_state;
   std::map<std::string, double> set;
+  std::string set_location;  // where `set:` is in the spec, for messages
+  std::string location;      // the dataset's entry in the spec
   std::vector<std::string> effects;
   std::filesystem::path excitation;
   double duration_s = 0.0;
@@ -90,7 +99,9 @@ Dataset read_dataset(const io::YamlMap& d) {
   out.strut_rig = d.has("kind") && d.choice("kind", {"vehicle", "strut_rig"}) == "strut_rig";
   out.model = d.file("model");
   out.damper_state = out.strut_rig ? "" : d.text_or("damper_state", "");
+  out.location = d.locate("name");
   if (d.has("set")) {
+    out.set_location = d.locate("set");
     const io::YamlMap set = d.map("set");
     for (const auto& key : set.keys()) out.set[key] = set.number(key);
     set.finish();
@@ -123,14 +134,45 @@ Dataset read_dataset(const io::YamlMap& d) {
             fmt::format("{}: frequencies must be finite and > 0 Hz", rig.locate("frequencies_Hz")));
       }
     }
-    rig.finish();
     out.duration_s = d.positive("duration_s");
     out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 1000.0;
+    for (double f : out.rig_frequencies_Hz) {
+      if (!(f < 0.5 * out.sample_rate_Hz)) {
+        throw InputError(fmt::format(
+            "{}: {:g} Hz is at or above the Nyquist frequency ({:g} Hz at sample_rate_Hz {:g}); "
+            "the record would show an alias. Give frequencies below {:g} Hz or a sample rate "
+            "above {:g} Hz",
+            rig.locate("frequencies_Hz"), f, 0.5 * out.sample_rate_Hz, out.sample_rate_Hz,
+            0.5 * out.sample_rate_Hz, 2.0 * f));
+      }
+    }
+    rig.finish();
     out.noise_N = d.has("noise_N") ? d.non_negative("noise_N") : 0.6;
   } else {
     out.excitation = d.file("excitation");
     out.duration_s = d.has("duration_s") ? d.positive("duration_s") : 0.0;
     out.sample_rate_Hz = d.has("sample_rate_Hz") ? d.positive_up_to("sample_rate_Hz", 1e5) : 500.0;
+    // A sweep up to a frequency the records cannot hold would alias into the band.
+    YAML::Node excitation;
+    try {
+      excitation = YAML::LoadFile(out.excitation.string());
+    } catch (const YAML::Exception&) {
+      // Malformed: the excitation's loader names what is wrong, later.
+    }
+    if (excitation.IsMap() && excitation["type"] &&
+        excitation["type"].as<std::string>() == "log_sweep" &&
+        (!excitation["end_frequency_Hz"] || excitation["end_frequency_Hz"].IsScalar())) {
+      const double end_Hz = excitation["end_frequency_Hz"]
+                                ? excitation["end_frequency_Hz"].as<double>()
+                                : road::LogSweepParameters{}.end_frequency_Hz;
+      if (end_Hz >= 0.5 * out.sample_rate_Hz) {
+        throw InputError(fmt::format(
+            "{}: the excitation {} sweeps up to {:g} Hz, at or above the Nyquist frequency "
+            "({:g} Hz at sample_rate_Hz {:g}); give a sample rate above {:g} Hz",
+            d.locate("excitation"), out.excitation.string(), end_Hz, 0.5 * out.sample_rate_Hz,
+            out.sample_rate_Hz, 2.0 * end_Hz));
+      }
+    }
   }
   out.records = static_cast<int>(d.has("records") ? d.integer("records") : 2);
   if (out.records < 1 || out.records > 20) {
@@ -146,11 +188,23 @@ Dataset read_dataset(const io::YamlMap& d) {
     out.sensor.noise_fraction = s.has("noise") ? s.non_negative_up_to("noise", 1.0) : 0.005;
     out.sensor.high_pass_Hz = s.has("high_pass_Hz") ? s.non_negative("high_pass_Hz") : 0.1;
     out.sensor.low_pass_Hz = s.has("low_pass_Hz") ? s.positive("low_pass_Hz") : 0.0;
+    const double nyquist_Hz = 0.5 * out.sample_rate_Hz;
+    auto below_nyquist = [&](const io::YamlMap& map, const std::string& key, double f) {
+      if (f >= nyquist_Hz) {
+        throw InputError(fmt::format(
+            "{} is {:g} Hz, at or above the Nyquist frequency ({:g} Hz at sample_rate_Hz {:g}); "
+            "give a frequency below {:g} Hz or a higher sample rate",
+            map.locate(key), f, nyquist_Hz, out.sample_rate_Hz, nyquist_Hz));
+      }
+    };
+    below_nyquist(s, "high_pass_Hz", out.sensor.high_pass_Hz);
+    below_nyquist(s, "low_pass_Hz", out.sensor.low_pass_Hz);
     if (s.has("mount")) {
       const io::YamlMap m = s.map("mount");
       out.mount_channel = m.choice("channel", {"body_acc", "wheel_acc"});
       out.sensor.mount =
           study::SensorMount{m.positive("frequency_Hz"), m.positive("damping_ratio")};
+      below_nyquist(m, "frequency_Hz", out.sensor.mount->frequency_Hz);
       m.finish();
     }
     s.finish();
@@ -169,6 +223,7 @@ std::unique_ptr<road::RoadInput> excitation_for(const Dataset& d, int record,
   }
   const long seed = node["seed"] ? node["seed"].as<long>() : 1;
   node["seed"] = seed + record - 1;
+  const io::TemporaryFile registered(scratch);  // removed if the run is interrupted
   {
     std::ofstream out(scratch);
     out << node << "\n";
@@ -181,7 +236,8 @@ std::unique_ptr<road::RoadInput> excitation_for(const Dataset& d, int record,
 // A strut rig dataset: each record a multisine displacement (record 1 in sine phase, record
 // k >= 2 with seeded random phases), the strut-test force at the truth plus Gaussian noise.
 void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double>& strut,
-                       const std::filesystem::path& dir, long seed_offset) {
+                       const std::filesystem::path& dir, const std::filesystem::path& out_dir,
+                       long seed_offset) {
   YAML::Node truth;
   truth["dataset"] = d.name;
   truth["kind"] = "strut_rig";
@@ -221,7 +277,7 @@ void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double
     const auto force = simulate::reference_strut_test_force(t, displacement, strut);
     std::normal_distribution<double> noise(0.0, d.noise_N);
     const std::string file = k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k);
-    io::write_atomically(dir / file, [&](std::ostream& out) {
+    io::write_atomically(out_dir / file, [&](std::ostream& out) {
       out << "time[s],displacement[mm],force[N]\n";
       for (std::size_t n = 0; n < samples; ++n) {
         out << fmt::format("{:.6g},{:.6g},{:.6g}\n", t[n], 1e3 * x[n],
@@ -232,7 +288,7 @@ void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double
     std::cerr << fmt::format("generate-hidden: {} ({:.0f} s at {:g} Hz)\n", (dir / file).string(),
                              t.back(), d.sample_rate_Hz);
   }
-  io::write_atomically(dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
+  io::write_atomically(out_dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
     out << "# The truth behind " << d.name
         << " (ridefit generate-hidden): not to be read by the diagnosis\n"
         << truth << "\n";
@@ -245,6 +301,27 @@ void run(const GenerateHiddenFlags& flags) {
   for (const auto& d : spec.maps("datasets")) datasets.push_back(read_dataset(d));
   spec.finish();
   if (datasets.empty()) throw InputError(fmt::format("{}: no datasets", flags.spec_file));
+  // Every file the run writes, each once; none an input.
+  std::vector<std::string> files;
+  io::RunOutputs outputs({flags.spec_file});
+  for (std::size_t i = 0; i < datasets.size(); ++i) {
+    const Dataset& d = datasets[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      if (datasets[j].name == d.name) {
+        throw InputError(fmt::format(
+            "{}: dataset name '{}' is also the name of dataset {} ({}); each dataset's files are "
+            "named after it, so give each its own name",
+            d.location, d.name, j + 1, datasets[j].location));
+      }
+    }
+    outputs.add_input(d.model);
+    if (!d.strut_rig) outputs.add_input(d.excitation);
+    for (int k = 1; k <= d.records; ++k) {
+      files.push_back(k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k));
+    }
+    files.push_back(d.name + "_truth.yaml");
+  }
+  outputs.add_folder(flags.output_dir, "-o", files, flags.force);
   // Every model and excitation is checked before anything is simulated or written.
   std::vector<model::QuarterCar> truths;
   std::vector<model::StrutTestParameters<double>> struts;
@@ -256,15 +333,19 @@ void run(const GenerateHiddenFlags& flags) {
         try {
           fitting::strut_parameter(strut, fitting::strut_parameter_index(key)) = value;
         } catch (const InputError& e) {
-          throw InputError(
-              fmt::format("{}: dataset {}: set: {}", flags.spec_file, d.name, e.what()));
+          throw InputError(fmt::format("{}: {}", d.set_location, e.what()));
         }
       }
       truths.push_back(file.make_model());
       struts.push_back(strut);
       continue;
     }
-    truths.push_back(io::load_quarter_car(d.model, d.set, d.damper_state).make_model());
+    try {
+      truths.push_back(io::load_quarter_car(d.model, d.set, d.damper_state).make_model());
+    } catch (const InputError& e) {
+      throw InputError(
+          with_override_origin(e.what(), fmt::format("given in {} as ", d.set_location)));
+    }
     struts.emplace_back();
     road::load_excitation(d.excitation);
     study::SensorModel check = d.sensor;
@@ -273,10 +354,14 @@ void run(const GenerateHiddenFlags& flags) {
   }
   io::prepare_output_directory(flags.output_dir, "-o");
   const std::filesystem::path dir = flags.output_dir;
+  // Written into a staged copy of the folder, put in place as a whole; paths in the truth files
+  // are relative to the folder itself.
+  io::StagedFolder staged(dir, files);
+  const std::filesystem::path out_dir = staged.path();
   for (std::size_t i = 0; i < datasets.size(); ++i) {
     const Dataset& d = datasets[i];
     if (d.strut_rig) {
-      write_rig_dataset(d, struts[i], dir, flags.seed_offset);
+      write_rig_dataset(d, struts[i], dir, out_dir, flags.seed_offset);
       continue;
     }
     YAML::Node truth;
@@ -297,7 +382,8 @@ void run(const GenerateHiddenFlags& flags) {
       truth["mount"]["damping_ratio"] = d.sensor.mount->damping_ratio;
     }
     for (int k = 1; k <= d.records; ++k) {
-      const auto road = excitation_for(d, k, dir / (".road_" + d.name + ".yaml"));
+      const auto road = excitation_for(
+          d, k, out_dir / fmt::format(".road_{}.yaml.tmp{}", d.name, static_cast<long>(getpid())));
       simulate::SimulationOptions options;
       options.output_rate_Hz = d.sample_rate_Hz;
       options.duration_s = d.duration_s;
@@ -316,7 +402,7 @@ void run(const GenerateHiddenFlags& flags) {
       const auto wheel = study::measure(run.wheel_acc_m_per_s2, d.sample_rate_Hz,
                                         d.mount_channel == "wheel_acc" ? mounted : plain, rng);
       const std::string file = k == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, k);
-      io::write_atomically(dir / file, [&](std::ostream& out) {
+      io::write_atomically(out_dir / file, [&](std::ostream& out) {
         out << "time[s],road[m],body_acc[m/s^2],wheel_acc[m/s^2]\n";
         for (std::size_t n = 0; n < run.time_s.size(); ++n) {
           out << fmt::format("{:.6g},{:.6g},{:.6g},{:.6g}\n", run.time_s[n], run.road_m[n], body[n],
@@ -327,12 +413,13 @@ void run(const GenerateHiddenFlags& flags) {
       std::cerr << fmt::format("generate-hidden: {} ({:.0f} s at {:g} Hz)\n", (dir / file).string(),
                                run.time_s.back(), d.sample_rate_Hz);
     }
-    io::write_atomically(dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
+    io::write_atomically(out_dir / (d.name + "_truth.yaml"), [&](std::ostream& out) {
       out << "# The truth behind " << d.name
           << " (ridefit generate-hidden): not to be read by the diagnosis\n"
           << truth << "\n";
     });
   }
+  staged.commit();
 }
 
 }  // namespace
@@ -349,6 +436,9 @@ void register_generate_hidden(CLI::App& app) {
   command->add_option("-o,--output", flags->output_dir, "Output folder")->required();
   command->add_option("--seed", flags->seed_offset, "Added to every dataset's noise seed")
       ->capture_default_str();
+  command->add_flag("--force", flags->force,
+                    "Write into an existing -o folder that holds files ridefit did not write "
+                    "there (files of the same name are replaced; inputs never are)");
   command->callback([flags] { run(*flags); });
 }
 

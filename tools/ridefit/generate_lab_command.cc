@@ -21,6 +21,8 @@
 #include "command_options.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
+#include "ridefit/io/staged_folder.h"
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/model/strut_test.h"
 #include "ridefit/road/commanded_road.h"
@@ -35,6 +37,7 @@ namespace {
 
 struct GenerateLabFlags {
   std::string output_dir;
+  bool force = false;
   unsigned seed = 1;
 };
 
@@ -197,8 +200,14 @@ void write_semi_active_drive(const std::filesystem::path& path, std::mt19937_64&
 }
 
 void run(const GenerateLabFlags& flags) {
-  io::prepare_output_directory(flags.output_dir, "OUT_DIR");
-  const std::filesystem::path dir(flags.output_dir);
+  const std::vector<std::string> files = {
+      "triangle_3mm_1mmps.csv", "dynamic_60s.csv",        "shim_0mm.csv",          "shim_2mm.csv",
+      "shim_4mm.csv",           "semi_active_random.csv", "semi_active_drive.csv", "truth.yaml"};
+  io::RunOutputs({}).add_folder(flags.output_dir, "DIR", files, flags.force);
+  io::prepare_output_directory(flags.output_dir, "DIR");
+  // Written into a staged copy of the folder, put in place as a whole.
+  io::StagedFolder staged(flags.output_dir, files);
+  const std::filesystem::path dir = staged.path();
   std::mt19937_64 rng(flags.seed);
   std::vector<double> t;
   for (int k = 0; k <= 10 * 12 * 200; ++k) t.push_back(k / 200.0);
@@ -233,6 +242,7 @@ void run(const GenerateLabFlags& flags) {
         "  command_lag_s: 0.012\n  accelerometer_noise_share_of_rms: 0.01\n",
         flags.seed, kOffset_N, kNoise_N, kQuantum_N);
   });
+  staged.commit();
   std::cout << "Rig tests written to " << flags.output_dir << "\n";
 }
 
@@ -245,6 +255,9 @@ void register_generate_lab(CLI::App& app) {
   command->add_option("directory", flags->output_dir, "Output directory (created if missing)")
       ->required();
   command->add_option("--seed", flags->seed, "Seed of the force noise")->capture_default_str();
+  command->add_flag("--force", flags->force,
+                    "Write into an existing folder that holds files ridefit did not write there "
+                    "(files of the same name are replaced)");
   command->callback([flags] { run(*flags); });
 }
 

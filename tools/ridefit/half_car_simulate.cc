@@ -8,6 +8,7 @@
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/half_car_file.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/simulate/half_car_simulation.h"
 #include "ridefit/study/half_car_metrics.h"
@@ -49,9 +50,7 @@ io::CsvTable to_table(const simulate::HalfCarResponse& r) {
 }  // namespace
 
 void simulate_half_car(const SimulateFlags& flags) {
-  if (!flags.output_file.empty()) {
-    io::check_output_file(flags.output_file, {flags.model_file, flags.excitation_file}, "-o");
-  }
+  io::RunOutputs({flags.model_file, flags.excitation_file}).add_file(flags.output_file, "-o");
   if (!flags.damper_state.empty()) {
     throw InputError(
         "--damper-state: a half car has a damper state per axle; use --set "
@@ -60,6 +59,8 @@ void simulate_half_car(const SimulateFlags& flags) {
   const auto file = io::load_half_car(flags.model_file, parse_key_values(flags.overrides), "--set");
   const model::HalfCar car = file.make_model();
   const auto road = road::load_excitation(flags.excitation_file);
+  check_output_rate(flags.output_rate_Hz,
+                    flags.duration_s > 0.0 ? flags.duration_s : road->duration_s(), flags.solver);
   simulate::HalfCarSimulationOptions options;
   options.output_rate_Hz = flags.output_rate_Hz;
   options.duration_s = flags.duration_s;

@@ -9,6 +9,7 @@
 #include <new>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/temporary_files.h"
 #include "subcommands.h"
 
 int main(int argc, char** argv) {
@@ -16,6 +17,8 @@ int main(int argc, char** argv) {
   // failed step) reaches the user in ridefit's own words, so its log stays quiet.
   FLAGS_minloglevel = google::GLOG_FATAL;
   google::InitGoogleLogging(argv[0]);
+  // An interrupted run removes its temporary files and ends gnuplot before it dies.
+  ridefit::io::install_temporary_cleanup();
   CLI::App app{"ridefit: vehicle vertical dynamics with suspension friction"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "ridefit 0.1.0");

@@ -30,7 +30,7 @@ void run(const ModesFlags& flags) {
   }
   for (const auto& state : states) {
     const auto file =
-        io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), state);
+        load_quarter_car_with_set(flags.model_file, flags.overrides, state, "--state");
     const auto modes = simulate::quarter_car_modes(file.make_model());
     nlohmann::json list = nlohmann::json::array();
     for (const auto& mode : modes.oscillatory) {

@@ -16,6 +16,7 @@
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/optimisation/evaluation_journal.h"
 #include "ridefit/optimisation/friction_cost.h"
 #include "ridefit/optimisation/nlopt_tuner.h"
@@ -34,6 +35,7 @@ struct OptimiseFlags {
   std::string output_file;
   std::string resume_file;
   std::string journal_file;
+  bool force = false;
   std::string plot_file;
   int threads = -1;
   bool json = false;
@@ -319,8 +321,6 @@ void run(const OptimiseFlags& flags) {
     throw InputError(
         "--resume JOURNAL continues that journal; give --resume or --journal, not both");
   }
-  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, {study_path}, "-o");
-  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, {study_path}, "--plot");
   opt::TuningStudy study = opt::load_tuning_study(study_path);
   if (flags.threads >= 0) study.evaluation.threads = static_cast<unsigned>(flags.threads);
   // Every file the study reads: no output may replace one of them, nor another output.
@@ -337,34 +337,24 @@ void run(const OptimiseFlags& flags) {
       : !flags.journal_file.empty() ? std::filesystem::path(flags.journal_file)
       : !flags.output_file.empty()  ? sibling(flags.output_file, ".journal")
                                    : std::filesystem::path(study_path.stem().string() + ".journal");
-  const std::vector<std::pair<std::string, std::string>> outputs = {
-      {"-o", flags.output_file},
-      {"-o (the optimised model)", model_out},
-      {"-o (the trade-off CSV)", tradeoff_csv},
-      {flags.resume_file.empty() ? "--journal" : "--resume", journal_path.string()},
-      {"--plot", flags.plot_file}};
-  for (std::size_t i = 0; i < outputs.size(); ++i) {
-    if (outputs[i].second.empty()) continue;
-    if (i == 3 && !flags.resume_file.empty()) {
-      for (const auto& input : inputs) {
-        if (std::filesystem::exists(input) && std::filesystem::exists(journal_path) &&
-            std::filesystem::equivalent(input, journal_path)) {
-          throw InputError(fmt::format("--resume {}: that is an input of the study, not a journal",
-                                       journal_path.string()));
-        }
-      }
-    } else {
-      io::check_output_file(outputs[i].second, inputs, outputs[i].first);
-    }
-    for (std::size_t k = 0; k < i; ++k) {
-      if (!outputs[k].second.empty() &&
-          std::filesystem::absolute(outputs[k].second).lexically_normal() ==
-              std::filesystem::absolute(outputs[i].second).lexically_normal()) {
-        throw InputError(fmt::format("{} {} is also the {} file; give each output its own path",
-                                     outputs[i].first, outputs[i].second, outputs[k].first));
+  if (!flags.resume_file.empty()) {
+    for (const auto& input : inputs) {
+      if (io::same_file(input, journal_path)) {
+        throw InputError(fmt::format("--resume {}: that is an input of the study, not a journal",
+                                     journal_path.string()));
       }
     }
   }
+  io::RunOutputs outputs(inputs);
+  outputs.add_file(flags.output_file, "-o");
+  outputs.add_file(model_out, "-o (the optimised model)");
+  outputs.add_file(tradeoff_csv, "-o (the trade-off CSV)");
+  if (flags.resume_file.empty()) {
+    outputs.add_file(journal_path, "--journal");
+  } else {
+    outputs.add_input(journal_path);
+  }
+  outputs.add_plot(flags.plot_file, "--plot");
   // The roads are made (and every remaining check done) before the journal is opened, so a
   // study that cannot run never replaces an existing journal.
   opt::TuningProblem problem(study);
@@ -373,9 +363,20 @@ void run(const OptimiseFlags& flags) {
                                             opt::metric_names(study.kind).size()};
   std::optional<opt::EvaluationJournal> journal;
   if (!flags.resume_file.empty()) {
-    journal.emplace(opt::EvaluationJournal::resume(journal_path, fingerprint, shape));
+    try {
+      journal.emplace(opt::EvaluationJournal::resume(journal_path, fingerprint, shape));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--resume: {}", e.what()));
+    }
   } else {
-    journal.emplace(opt::EvaluationJournal::create(journal_path, fingerprint));
+    try {
+      journal.emplace(opt::EvaluationJournal::create(journal_path, fingerprint, flags.force));
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (what.find("did not finish") == std::string::npos) throw;
+      throw InputError(fmt::format("{} (--resume {} continues it; --force starts afresh)", what,
+                                   journal_path.string()));
+    }
   }
   problem.attach_journal(&*journal);
   if (!flags.quiet) {
@@ -422,6 +423,7 @@ void run(const OptimiseFlags& flags) {
     });
   }
   if (!flags.plot_file.empty()) io::draw_figure(figure_of(problem, o), flags.plot_file);
+  journal->mark_finished();
   if (flags.json) {
     std::cout << result.dump(2) << "\n";
   } else {
@@ -459,6 +461,9 @@ void register_optimise(CLI::App& app) {
                       "optimised model) and NAME_tradeoff.csv");
   command->add_option("--resume", flags->resume_file,
                       "Continue a killed run from its journal, reusing finished evaluations");
+  command->add_flag("--force", flags->force,
+                    "Start afresh even when the journal holds evaluations of a run that did not "
+                    "finish (they are lost; --resume continues them instead)");
   command->add_option("--journal", flags->journal_file,
                       "Journal file (default: next to -o, else STUDY.journal here)");
   command->add_option("--plot", flags->plot_file, "Search history and trade-off (.png or .svg)");

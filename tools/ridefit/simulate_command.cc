@@ -13,6 +13,7 @@
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_kind.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/signal/statistics.h"
@@ -47,11 +48,9 @@ void run(const SimulateFlags& flags) {
   if (flags.rear_delay_s >= 0.0) {
     throw InputError("--rear-delay: a quarter car has one wheel; the flag is for half cars");
   }
-  if (!flags.output_file.empty()) {
-    io::check_output_file(flags.output_file, {flags.model_file, flags.excitation_file}, "-o");
-  }
-  const auto model_file =
-      io::load_quarter_car(flags.model_file, parse_overrides(flags.overrides), flags.damper_state);
+  io::RunOutputs({flags.model_file, flags.excitation_file}).add_file(flags.output_file, "-o");
+  const auto model_file = load_quarter_car_with_set(flags.model_file, flags.overrides,
+                                                    flags.damper_state, "--damper-state");
   const auto road = road::load_excitation(flags.excitation_file);
   // A controlled damper follows the record's command (a current or voltage column of a measured
   // excitation); say when one of the two is there without the other.
@@ -68,6 +67,8 @@ void run(const SimulateFlags& flags) {
         flags.model_file, flags.excitation_file);
   }
 
+  check_output_rate(flags.output_rate_Hz,
+                    flags.duration_s > 0.0 ? flags.duration_s : road->duration_s(), flags.solver);
   simulate::SimulationOptions options;
   options.output_rate_Hz = flags.output_rate_Hz;
   options.duration_s = flags.duration_s;

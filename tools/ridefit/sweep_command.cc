@@ -14,6 +14,7 @@
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/study/half_car_sweep.h"
 #include "subcommands.h"
 
@@ -105,8 +106,9 @@ io::Figure figure_of(const study::HalfCarSweep& sweep, const std::vector<study::
 
 void run(const SweepFlags& flags) {
   const std::vector<std::filesystem::path> inputs = {flags.study_file};
-  if (!flags.output_file.empty()) io::check_output_file(flags.output_file, inputs, "-o");
-  if (!flags.plot_file.empty()) io::check_plot_file(flags.plot_file, inputs, "--plot");
+  io::RunOutputs outputs(inputs);
+  outputs.add_file(flags.output_file, "-o");
+  outputs.add_plot(flags.plot_file, "--plot");
   const study::HalfCarSweep sweep = study::load_half_car_sweep(flags.study_file);
   if (!flags.plot_file.empty() && !sweep.plot) {
     throw InputError(fmt::format(

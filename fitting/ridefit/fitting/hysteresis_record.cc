@@ -7,6 +7,7 @@
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/signal/signal_presence.h"
 
 namespace ridefit::fitting {
 
@@ -35,14 +36,9 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
     throw InputError(fmt::format("{}: {} samples; a hysteresis fit needs at least 20",
                                  csv_file.string(), record.time_s.size()));
   }
-  const auto [lo, hi] =
-      std::minmax_element(record.displacement_m.begin(), record.displacement_m.end());
-  if (!(*hi - *lo > 1e-9)) {
-    throw InputError(fmt::format(
-        "{}: the displacement never moves ({} m throughout): nothing can be identified from "
-        "it",
-        csv_file.string(), *lo));
-  }
+  // A rig that did not move, or a load cell that read nothing, gives a fit of round-off.
+  signal::require_signal(record.displacement_m, record.source, "displacement", "m");
+  signal::require_signal(record.force_N, record.source, "force", "N");
   return record;
 }
 

@@ -21,8 +21,8 @@ struct HysteresisRecord {
 // Reads `time[...]`, `displacement[...]`, `force[...]` columns in any supported units, and an
 // optional command column `current[A|mA]` or `voltage[V|mV]`. InputError (naming file, row,
 // column) for a missing column, a time that does not increase, fewer than 20 samples, a
-// displacement that never moves (nothing to identify), both a current and a voltage column, or
-// a command in the wrong kind of unit.
+// displacement that never moves or a force that never changes (signal/signal_presence.h: nothing
+// to identify), both a current and a voltage column, or a command in the wrong kind of unit.
 HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file);
 
 }  // namespace ridefit::fitting

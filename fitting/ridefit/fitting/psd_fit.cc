@@ -23,6 +23,7 @@
 #include "ridefit/signal/equivalent_dof.h"
 #include "ridefit/signal/hann_window.h"
 #include "ridefit/signal/noise_floor.h"
+#include "ridefit/signal/signal_presence.h"
 #include "ridefit/signal/uniform_sample_rate.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"
 
@@ -310,6 +311,18 @@ PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
   if (m.body_acc_m_per_s2.empty() && m.wheel_acc_m_per_s2.empty()) {
     throw InputError(fmt::format(
         "{}: no body_acc or wheel_acc column; the PSD fit needs at least one", m.source));
+  }
+  // Zero or constant channels, and a road that does not move, carry nothing to fit: their
+  // spectra are round-off (exit 2, not a confident answer).
+  std::vector<double> road_m(m.time_s.size());
+  for (std::size_t k = 0; k < m.time_s.size(); ++k) road_m[k] = m.road->at(m.time_s[k]).elevation_m;
+  signal::require_signal(road_m, excitation_file.empty() ? m.source : excitation_file.string(),
+                         "road", "m");
+  if (!m.body_acc_m_per_s2.empty()) {
+    signal::require_signal(m.body_acc_m_per_s2, m.source, "body_acc", "m/s^2");
+  }
+  if (!m.wheel_acc_m_per_s2.empty()) {
+    signal::require_signal(m.wheel_acc_m_per_s2, m.source, "wheel_acc", "m/s^2");
   }
   return m;
 }

@@ -4,7 +4,14 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -14,6 +21,7 @@ namespace ridefit::optimisation {
 namespace {
 
 constexpr const char* kFormat = "ridefit-optimise-journal-1";
+constexpr const char* kFinished = "{\"finished\":true}";
 
 std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -36,15 +44,68 @@ JournalRecord record_of(const nlohmann::json& j) {
 
 std::string json_number(double v) { return fmt::format("{:.17g}", v); }
 
+// The process holding a flock on the file `fd` refers to, from /proc/locks (Linux); 0 unknown.
+long lock_holder(int fd) {
+  struct stat st {};
+  if (fstat(fd, &st) != 0) return 0;
+  std::ifstream locks("/proc/locks");
+  std::string line;
+  while (std::getline(locks, line)) {
+    std::istringstream fields(line);
+    std::string number, kind, mode, access, pid, device;
+    fields >> number >> kind;
+    if (kind == "->") fields >> kind;  // a waiter
+    fields >> mode >> access >> pid >> device;
+    if (kind != "FLOCK") continue;
+    const auto last = device.rfind(':');
+    if (last == std::string::npos) continue;
+    if (device.substr(last + 1) == std::to_string(st.st_ino)) {
+      const long holder = std::strtol(pid.c_str(), nullptr, 10);
+      if (holder != getpid()) return holder;
+    }
+  }
+  return 0;
+}
+
+// Opens (creating if missing, never truncating) and locks the journal at `path`.
+int lock_journal(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw InputError(
+        fmt::format("journal {}: cannot be opened: {}", path.string(), std::strerror(errno)));
+  }
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    const int error = errno;
+    const long holder = lock_holder(fd);
+    ::close(fd);
+    if (error == EWOULDBLOCK) {
+      throw InputError(fmt::format(
+          "journal {}: in use by {} (another optimisation writes it); wait for it to finish or "
+          "give another journal",
+          path.string(), holder > 0 ? fmt::format("process {}", holder) : "another process"));
+    }
+    throw InputError(
+        fmt::format("journal {}: cannot be locked: {}", path.string(), std::strerror(error)));
+  }
+  return fd;
+}
+
 }  // namespace
 
-EvaluationJournal::EvaluationJournal(std::filesystem::path path, std::ofstream out)
-    : path_(std::move(path)), out_(std::move(out)) {}
+EvaluationJournal::EvaluationJournal(std::filesystem::path path, std::ofstream out, int lock_fd)
+    : path_(std::move(path)), out_(std::move(out)), lock_fd_(lock_fd) {}
 
 EvaluationJournal::EvaluationJournal(EvaluationJournal&& other) noexcept
     : path_(std::move(other.path_)),
       out_(std::move(other.out_)),
-      records_(std::move(other.records_)) {}
+      lock_fd_(other.lock_fd_),
+      records_(std::move(other.records_)) {
+  other.lock_fd_ = -1;
+}
+
+EvaluationJournal::~EvaluationJournal() {
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
+}
 
 std::string EvaluationJournal::key(const std::string& variant, std::span<const double> x) {
   std::string k = variant;
@@ -53,21 +114,55 @@ std::string EvaluationJournal::key(const std::string& variant, std::span<const d
 }
 
 EvaluationJournal EvaluationJournal::create(const std::filesystem::path& path,
-                                            const std::string& fingerprint) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw InputError(fmt::format("journal {}: cannot be written", path.string()));
-  out << nlohmann::json{{"format", kFormat}, {"study", fingerprint}}.dump() << "\n" << std::flush;
-  return EvaluationJournal(path, std::move(out));
+                                            const std::string& fingerprint,
+                                            bool replace_evaluations) {
+  if (std::filesystem::is_directory(path)) {
+    throw InputError(fmt::format("journal {}: is a directory, not a journal file", path.string()));
+  }
+  const int fd = lock_journal(path);
+  try {
+    if (!replace_evaluations) {
+      // Lines after the header are evaluations (a torn last one included), up to the last
+      // mark of a finished run.
+      std::istringstream lines(read_all(path));
+      std::string line;
+      std::size_t number = 0, unfinished = 0;
+      while (std::getline(lines, line)) {
+        if (++number == 1 || line.empty()) continue;
+        unfinished = line == kFinished ? 0 : unfinished + 1;
+      }
+      if (unfinished > 0) {
+        throw InputError(fmt::format(
+            "journal {}: holds {} evaluations of a run that did not finish, which starting afresh "
+            "would lose; resume it, or replace it explicitly",
+            path.string(), unfinished));
+      }
+    }
+    std::ofstream out(path, std::ios::trunc);
+    if (!out) throw InputError(fmt::format("journal {}: cannot be written", path.string()));
+    out << nlohmann::json{{"format", kFormat}, {"study", fingerprint}}.dump() << "\n" << std::flush;
+    return EvaluationJournal(path, std::move(out), fd);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
 }
 
 EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
                                             const std::string& fingerprint, const Shape& shape) {
   if (std::filesystem::is_directory(path)) {
-    throw InputError(fmt::format("--resume {}: is a directory, not a journal file", path.string()));
+    throw InputError(fmt::format("journal {}: is a directory, not a journal file", path.string()));
   }
   if (!std::filesystem::is_regular_file(path)) {
-    throw InputError(fmt::format("--resume {}: no such journal file", path.string()));
+    throw InputError(fmt::format("journal {}: no such journal file", path.string()));
   }
+  const int fd = lock_journal(path);
+  struct Unlock {
+    int fd;
+    ~Unlock() {
+      if (fd >= 0) ::close(fd);
+    }
+  } unlock{fd};
   const std::string text = read_all(path);
   // A run killed while writing leaves a last line without its newline: it is not read, and cut
   // off once the journal is known to be this study's.
@@ -77,24 +172,24 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
   // Line 1 first: nothing is touched unless this is the study's own journal.
   nlohmann::json header;
   if (!std::getline(lines, line) || line.empty()) {
-    throw InputError(fmt::format("--resume {}: the journal is empty (or its first line is torn)",
-                                 path.string()));
+    throw InputError(
+        fmt::format("journal {}: the journal is empty (or its first line is torn)", path.string()));
   }
   try {
     header = nlohmann::json::parse(line);
   } catch (const nlohmann::json::exception&) {
     throw InputError(
-        fmt::format("--resume {}: line 1 is not JSON; is this a ridefit journal?", path.string()));
+        fmt::format("journal {}: line 1 is not JSON; is this a ridefit journal?", path.string()));
   }
   if (!header.is_object() || header.value("format", "") != kFormat) {
-    throw InputError(fmt::format(
-        "--resume {}: not a ridefit optimise journal (line 1 has no \"format\": \"{}\")",
-        path.string(), kFormat));
+    throw InputError(
+        fmt::format("journal {}: not a ridefit optimise journal (line 1 has no \"format\": \"{}\")",
+                    path.string(), kFormat));
   }
   if (header.value("study", "") != fingerprint) {
     throw InputError(fmt::format(
-        "--resume {}: the journal belongs to another study or to different model or road "
-        "files (fingerprint {} here, {} in the journal); start without --resume",
+        "journal {}: the journal belongs to another study or to different model or road "
+        "files (fingerprint {} here, {} in the journal); start a new journal",
         path.string(), fingerprint, header.value("study", "")));
   }
   std::map<std::string, JournalRecord> records;
@@ -102,9 +197,10 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
   while (std::getline(lines, line)) {
     ++number;
     auto bad = [&](const std::string& why) {
-      return InputError(fmt::format("--resume {}: line {} is not an evaluation of this study ({})",
+      return InputError(fmt::format("journal {}: line {} is not an evaluation of this study ({})",
                                     path.string(), number, why));
     };
+    if (line == kFinished) continue;
     JournalRecord r;
     try {
       r = record_of(nlohmann::json::parse(line));
@@ -132,8 +228,9 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
   }
   if (complete < text.size()) std::filesystem::resize_file(path, complete);
   std::ofstream out(path, std::ios::app);
-  if (!out) throw InputError(fmt::format("--resume {}: cannot be appended to", path.string()));
-  EvaluationJournal journal(path, std::move(out));
+  if (!out) throw InputError(fmt::format("journal {}: cannot be appended to", path.string()));
+  EvaluationJournal journal(path, std::move(out), fd);
+  unlock.fd = -1;
   journal.records_ = std::move(records);
   return journal;
 }
@@ -164,6 +261,12 @@ void EvaluationJournal::append(const JournalRecord& r) {
   out_ << line << std::flush;
   if (!out_) throw RunError(fmt::format("journal {}: write failed", path_.string()));
   records_[key(r.variant, r.x)] = r;
+}
+
+void EvaluationJournal::mark_finished() {
+  std::lock_guard lock(mutex_);
+  out_ << kFinished << "\n" << std::flush;
+  if (!out_) throw RunError(fmt::format("journal {}: write failed", path_.string()));
 }
 
 std::size_t EvaluationJournal::size() const {

@@ -32,36 +32,45 @@ struct JournalRecord {
 // round-trips a double exactly, so a replayed point matches bit for bit.
 class EvaluationJournal {
  public:
-  // A new journal at `path` (an existing file is replaced).
-  static EvaluationJournal create(const std::filesystem::path& path,
-                                  const std::string& fingerprint);
+  // A new journal at `path`. The journal is locked (an advisory flock held until this object
+  // goes away): a journal another process holds is an InputError naming that process. An
+  // existing journal of a run that did not finish (evaluations after the last mark_finished())
+  // is replaced only with `replace_evaluations`, else it is an InputError saying how many
+  // evaluations it holds (nothing is touched).
+  static EvaluationJournal create(const std::filesystem::path& path, const std::string& fingerprint,
+                                  bool replace_evaluations = false);
   // What each line of this study's journal holds.
   struct Shape {
     std::size_t variables = 0;
     std::size_t cases = 0;
     std::size_t metrics = 0;
   };
-  // Continues the journal at `path`. InputError when it is missing, not a ridefit journal, or
-  // belongs to another study (fingerprint) — checked before anything is written; then a torn
-  // last line (the run was killed while writing) is cut off, and any other malformed line (not
-  // JSON, or x, cases or metrics of another size than `shape`, or a metric that is not a finite
-  // number >= 0) is an InputError naming its line number.
+  // Continues the journal at `path`, locked like create(). InputError when it is missing, not a
+  // ridefit journal, or belongs to another study (fingerprint) — checked before anything is
+  // written; then a torn last line (the run was killed while writing) is cut off, and any other
+  // malformed line (not JSON, or x, cases or metrics of another size than `shape`, or a metric that
+  // is not a finite number >= 0) is an InputError naming its line number.
   static EvaluationJournal resume(const std::filesystem::path& path, const std::string& fingerprint,
                                   const Shape& shape);
 
   EvaluationJournal(EvaluationJournal&& other) noexcept;
+  EvaluationJournal& operator=(EvaluationJournal&&) = delete;
+  ~EvaluationJournal();
 
   std::optional<JournalRecord> find(const std::string& variant, std::span<const double> x) const;
   void append(const JournalRecord& record);  // thread-safe
+  // Marks the run finished (a line resume() skips): a later create() may replace the journal.
+  void mark_finished();
   std::size_t size() const;
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  EvaluationJournal(std::filesystem::path path, std::ofstream out);
+  EvaluationJournal(std::filesystem::path path, std::ofstream out, int lock_fd);
   static std::string key(const std::string& variant, std::span<const double> x);
 
   std::filesystem::path path_;
   std::ofstream out_;
+  int lock_fd_ = -1;  // holds the flock
   std::map<std::string, JournalRecord> records_;
   mutable std::mutex mutex_;
 };

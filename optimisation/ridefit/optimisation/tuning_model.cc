@@ -68,11 +68,11 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
       }
       model.quarter = std::move(file);
     } catch (const InputError& e) {
-      // The loader speaks of the command line; here the values came from the study.
+      // Here the overrides came from the study.
       std::string message = e.what();
-      const std::string cli = "(given on the command line as --set ";
-      if (const auto at = message.find(cli); at != std::string::npos) {
-        message.replace(at, cli.size(), "(given as ");
+      const std::string marker = io::kOverrideMarker;
+      if (const auto at = message.find(marker); at != std::string::npos) {
+        message.replace(at, marker.size(), "given as ");
       }
       throw InputError(fmt::format("{}: {}", origin, message));
     }

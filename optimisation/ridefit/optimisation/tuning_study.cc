@@ -8,11 +8,14 @@
 #include <set>
 
 #include "ridefit/comfort/weighting_filter.h"
+#include "ridefit/io/closest_names.h"
+#include "ridefit/io/half_car_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/value_range.h"
 #include "ridefit/io/yaml_map.h"
+#include "ridefit/model/quarter_car_parameter_names.h"
 #include "ridefit/optimisation/tuning_model.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/study/half_car_metrics.h"
@@ -62,9 +65,36 @@ std::optional<double> model_value(const std::filesystem::path& model, const std:
   }
 }
 
+// A design parameter must be a number of the model: the topology is not, and a misspelt key
+// is named as an unknown parameter with the closest names.
+void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const std::string& key) {
+  const std::string leaf = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+  if (leaf == "damper_state" || leaf == "model" || leaf == "tyre_lift_off") {
+    throw InputError(fmt::format(
+        "{}: '{}' is a setting of the model, not a number to tune; give a numeric model key "
+        "such as damping_Ns_per_m (a setting goes under the study's model settings)",
+        entry.locate("parameter"), key));
+  }
+  std::vector<std::string> candidates = io::yaml_number_keys(study.model_file);
+  bool known = false;
+  if (study.kind == ModelKind::kQuarterCar) {
+    known = model::quarter_car_parameter_index(key).has_value();
+    for (const auto& name : model::kQuarterCarParameterNames) candidates.emplace_back(name);
+  } else {
+    known = io::half_car_has_key(study.model_file, key);
+  }
+  known = known || std::find(candidates.begin(), candidates.end(), key) != candidates.end();
+  if (!known) {
+    throw InputError(fmt::format("{}: unknown parameter '{}' of model {}{}",
+                                 entry.locate("parameter"), key, study.model_file.string(),
+                                 io::closest_names_text(key, candidates)));
+  }
+}
+
 DesignVariable read_design(const io::YamlMap& entry, const TuningStudy& study) {
   DesignVariable v;
   v.keys = entry.texts("parameter");
+  for (const auto& key : v.keys) check_design_key(entry, study, key);
   v.name = entry.has("name") ? entry.text("name") : v.keys.front();
   v.lower = entry.number("lower");
   v.upper = entry.number("upper");

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/temporary_files.h"
 
 namespace ridefit::io {
 
@@ -21,8 +22,12 @@ void write_atomically(const std::filesystem::path& path,
     throw InputError(
         fmt::format("{}: cannot write, it exists and is not a regular file", path.string()));
   }
+  // What a killed run left behind for this file goes first; this run's own temporary is
+  // removed by the signal handler if the run is interrupted (temporary_files.h).
+  remove_stale_temporaries(dir, path.filename().string());
   const std::filesystem::path tmp =
       dir / fmt::format(".{}.tmp{}", path.filename().string(), static_cast<long>(getpid()));
+  const TemporaryFile registered(tmp);
   try {
     std::ofstream out(tmp);
     if (!out) throw InputError(fmt::format("{}: cannot open for writing", path.string()));

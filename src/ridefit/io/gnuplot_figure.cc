@@ -2,12 +2,13 @@
 
 #include <fcntl.h>
 #include <fmt/core.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -16,8 +17,7 @@
 
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
-
-extern char** environ;
+#include "ridefit/io/temporary_files.h"
 
 namespace ridefit::io {
 namespace {
@@ -163,24 +163,50 @@ std::string read_all(const fs::path& path) {
 }
 
 // Runs `gnuplot script` without a shell; returns its exit status and stderr.
+// The gnuplot executable on PATH, or "" when there is none.
+std::string gnuplot_path() {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return "";
+  std::stringstream dirs(path);
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    // An empty PATH entry means the current directory.
+    const fs::path base = dir.empty() ? fs::current_path() : fs::path(dir);
+    if (access((base / "gnuplot").c_str(), X_OK) == 0) return (base / "gnuplot").string();
+  }
+  return "";
+}
+
 std::pair<int, std::string> run_gnuplot(const fs::path& script, const fs::path& log) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  std::string program = "gnuplot";
-  std::string script_arg = script.string();
-  char* argv[] = {program.data(), script_arg.data(), nullptr};
-  pid_t pid = 0;
-  const int spawn_error = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawn_error != 0) {
+  // Everything the child needs is prepared before fork: between fork and exec it only calls
+  // async-signal-safe functions. The child dies with its parent (PR_SET_PDEATHSIG), so a
+  // killed run never leaves gnuplot behind.
+  std::string program = gnuplot_path();
+  if (program.empty()) {
     throw RunError(
         "gnuplot could not be started; install it (tools/setup installs the Debian package "
         "gnuplot-nox) or leave out --plot");
   }
+  std::string script_arg = script.string();
+  const std::string log_path = log.string();
+  char* argv[] = {program.data(), script_arg.data(), nullptr};
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw RunError("gnuplot could not be started: fork failed");
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);  // the parent died before prctl
+    const int in = open("/dev/null", O_RDONLY);
+    const int out = open("/dev/null", O_WRONLY);
+    const int err = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (in < 0 || out < 0 || err < 0) _exit(127);
+    dup2(in, STDIN_FILENO);
+    dup2(out, STDOUT_FILENO);
+    dup2(err, STDERR_FILENO);
+    execv(program.c_str(), argv);
+    _exit(127);
+  }
+  const ChildProcess child(pid);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw RunError("waiting for gnuplot failed");
@@ -232,18 +258,7 @@ PlotPanel xy_panel(std::string title, std::string x_label, std::string y_label) 
   return panel;
 }
 
-bool gnuplot_available() {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return false;
-  std::stringstream dirs(path);
-  std::string dir;
-  while (std::getline(dirs, dir, ':')) {
-    // An empty PATH entry means the current directory.
-    const fs::path base = dir.empty() ? fs::current_path() : fs::path(dir);
-    if (access((base / "gnuplot").c_str(), X_OK) == 0) return true;
-  }
-  return false;
-}
+bool gnuplot_available() { return !gnuplot_path().empty(); }
 
 void check_plot_file(const fs::path& path, const std::vector<fs::path>& inputs,
                      const std::string& flag) {
@@ -269,6 +284,8 @@ void draw_figure(const Figure& figure, const fs::path& path) {
   const fs::path script = dir / (stem + ".gp");
   const fs::path log = dir / (stem + ".log");
   const fs::path tmp_output = dir / (stem + (svg ? ".svg" : ".png"));
+  remove_stale_temporaries(dir, path.filename().string());
+  const TemporaryFile registered_script(script), registered_log(log), registered_output(tmp_output);
   auto cleanup = [&] {
     std::error_code ignored;
     fs::remove(script, ignored);

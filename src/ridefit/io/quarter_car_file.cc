@@ -226,10 +226,10 @@ QuarterCarFile load_quarter_car(const std::filesystem::path& path,
   if (overrides.empty()) return read_quarter_car(file, damper_state);
   for (const auto& [key, value] : overrides) {
     if (key == "damper_state" || key == "model") {
-      throw InputError(
-          fmt::format("--set {}: not a number key; use --damper-state for the "
-                      "topology",
-                      key));
+      throw InputError(fmt::format(
+          "{}: override '{}' is not a number key; the damper's topology is chosen as its damper "
+          "state",
+          path.string(), key));
     }
   }
   YAML::Node root = YAML::LoadFile(path.string());
@@ -237,12 +237,12 @@ QuarterCarFile load_quarter_car(const std::filesystem::path& path,
   try {
     return read_quarter_car(YamlMap(root, path, ""), damper_state);
   } catch (const InputError& e) {
-    // Say so when the offending key came from the command line rather than the file.
+    // Say so when the offending key came from an override rather than the file (callers
+    // replace kOverrideMarker with where the override came from: a flag, a study, a spec).
     const std::string message = e.what();
     for (const auto& [key, value] : overrides) {
       if (message.find("'" + key + "'") != std::string::npos) {
-        throw InputError(
-            fmt::format("{} (given on the command line as --set {}={})", message, key, value));
+        throw InputError(fmt::format("{} ({}{}={})", message, kOverrideMarker, key, value));
       }
     }
     throw;

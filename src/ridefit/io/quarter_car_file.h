@@ -75,7 +75,10 @@ struct QuarterCarFile {
 };
 
 // `overrides` replace (or add) numeric keys before validation, e.g. {"coulomb_force_N", 30};
-// `damper_state` ("" = as in the file) replaces the file's topology.
+// `damper_state` ("" = as in the file) replaces the file's topology. An error caused by an
+// override ends with "(" kOverrideMarker "KEY=VALUE)"; callers replace the marker with where
+// the override came from (a --set flag, a study, a spec file): the library names no flags.
+inline constexpr const char* kOverrideMarker = "given as an override ";
 QuarterCarFile load_quarter_car(const std::filesystem::path& path,
                                 const std::map<std::string, double>& overrides = {},
                                 const std::string& damper_state = "");

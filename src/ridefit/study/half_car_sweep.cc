@@ -10,6 +10,7 @@
 #include <memory>
 #include <set>
 
+#include "ridefit/io/closest_names.h"
 #include "ridefit/io/half_car_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/yaml_map.h"
@@ -31,8 +32,9 @@ SweepAxis read_axis(const io::YamlMap& entry, const std::filesystem::path& model
     if (!io::half_car_has_key(model, key)) {
       throw InputError(fmt::format(
           "{}: '{}' is not a key of model {} (give the dotted path of a numeric key, e.g. "
-          "front.damping_Ns_per_m)",
-          entry.locate("parameter"), key, model.string()));
+          "front.damping_Ns_per_m){}",
+          entry.locate("parameter"), key, model.string(),
+          io::closest_names_text(key, io::yaml_number_keys(model))));
     }
   }
   axis.name = entry.has("name") ? entry.text("name") : axis.keys.front();
@@ -200,6 +202,12 @@ HalfCarSweep load_half_car_sweep(const std::filesystem::path& study_file) {
       sweep.output_rate_Hz = time.positive_up_to("output_rate_Hz", 1e5);
     if (time.has("settle_s")) sweep.settle_s = time.non_negative_up_to("settle_s", 1e4);
     if (time.has("duration_s")) sweep.duration_s = time.positive_up_to("duration_s", 1e5);
+    if (sweep.duration_s > 0.0 && sweep.settle_s >= sweep.duration_s) {
+      throw InputError(fmt::format(
+          "{} is {:g} s, not below time.duration_s ({:g} s): nothing would be left to evaluate; "
+          "give a settle_s below the duration",
+          time.locate("settle_s"), sweep.settle_s, sweep.duration_s));
+    }
     time.finish();
   }
   std::size_t runs = sweep.roads.size() * std::max<std::size_t>(1, sweep.speeds_m_per_s.size());
@@ -310,6 +318,14 @@ std::vector<SweepRow> run_half_car_sweep(
     }
     if (!c.frequency) {
       c.input = speed ? road::load_excitation(path, *speed) : road::load_excitation(path);
+      const double used_s = sweep.duration_s > 0.0 ? sweep.duration_s : c.input->duration_s();
+      if (sweep.settle_s >= used_s) {
+        throw InputError(fmt::format(
+            "{}: time.settle_s is {:g} s, not below the {:g} s of road '{}'{}: nothing would be "
+            "left to evaluate; give a shorter settle_s or a longer road",
+            sweep.study_file.string(), sweep.settle_s, used_s, sweep.roads[point.road].first,
+            sweep.duration_s > 0.0 ? " (time.duration_s)" : ""));
+      }
     }
     roads[key] = std::move(c);
   }

@@ -12,6 +12,7 @@
 #include "ridefit/signal/correlation.h"
 #include "ridefit/signal/psd_average.h"
 #include "ridefit/signal/psd_smoothing.h"
+#include "ridefit/signal/signal_presence.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/uniform_sample_rate.h"
 
@@ -155,7 +156,7 @@ RecordingAnalysis analyse_recordings(std::span<const Recording> recordings,
                                      const RecordingAnalysisOptions& options) {
   options.validate();
   if (recordings.empty()) throw InputError("no recording to analyse");
-  const std::vector<std::string> names = chosen_channels(recordings.front(), options);
+  std::vector<std::string> names = chosen_channels(recordings.front(), options);
   const double nyquist_Hz = recordings.front().sample_rate_Hz / 2.0;
   if (options.band_low_Hz >= nyquist_Hz) {
     throw InputError(fmt::format(
@@ -188,6 +189,36 @@ RecordingAnalysis analyse_recordings(std::span<const Recording> recordings,
       }
     }
   }
+  // A channel with no signal (zero or constant) would give a PSD peak and a crest factor of
+  // round-off: a channel asked for is refused; of the channels chosen by default, those flat in
+  // some recording are left out (a simulation writes friction_force = 0 without friction), and
+  // a recording with none left is refused.
+  std::vector<std::string> kept;
+  std::string flat;
+  for (const auto& name : names) {
+    bool has_signal = true;
+    for (const Recording& recording : recordings) {
+      const auto& column = recording.table.column(name);
+      try {
+        signal::require_signal(column.values, recording.source.string(), name, column.unit);
+      } catch (const InputError&) {
+        if (!options.channels.empty()) throw;
+        has_signal = false;
+      }
+    }
+    if (has_signal) {
+      kept.push_back(name);
+    } else {
+      flat += (flat.empty() ? "" : ", ") + name;
+    }
+  }
+  if (kept.empty()) {
+    throw InputError(fmt::format(
+        "{}: no channel carries a signal ({} are zero or constant in at least one recording); "
+        "check the sensors and the logger",
+        recordings.front().source.string(), flat));
+  }
+  names = kept;
   RecordingAnalysis analysis;
   std::vector<std::vector<signal::PowerSpectralDensity>> spectra(names.size());
   std::vector<std::string> sources;
