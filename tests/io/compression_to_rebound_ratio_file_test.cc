@@ -77,7 +77,7 @@ TEST_F(CompressionToReboundRatioFile, QuarterCarRejectsRatiosOutsideZeroToTen) {
         load_quarter_car(testing::dataset("vehicles/passat_b8_front.yaml"),
                          {{"compression_to_rebound_ratio", 0.0}});
       },
-      "--set compression_to_rebound_ratio=0"));
+      "(given as an override compression_to_rebound_ratio=0)"));
   EXPECT_EQ(load_quarter_car(vehicle("passat_b8_front.yaml", "compression_to_rebound_ratio: 10"))
                 .parameters.compression_to_rebound_ratio,
             10.0);

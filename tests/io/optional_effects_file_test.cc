@@ -201,8 +201,8 @@ TEST_F(OptionalEffectsFile, OverridesSwitchEffectsOn) {
       [&] {
         load_quarter_car(path, {{"tyre_lift_off", 0.5}});
       },
-      "key 'tyre_lift_off' is '0.5', expected one of: 0, 1, false, true (given on the command "
-      "line as --set tyre_lift_off=0.5)"));
+      "key 'tyre_lift_off' is '0.5', expected one of: 0, 1, false, true (given as an override "
+      "tyre_lift_off=0.5)"));
   EXPECT_TRUE(testing::throws_input_error(
       [&] {
         load_quarter_car(path, {{"stribeck_velocity_m_per_s", -1.0}});

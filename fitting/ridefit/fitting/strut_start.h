@@ -23,6 +23,8 @@ namespace ridefit::fitting {
 std::map<std::string, double> estimate_strut_start(const std::vector<HysteresisRecord>& records);
 
 // Fits from each start (the same free parameters and options) and keeps the lowest final cost.
+// Without per-file parameters each start first gets four iterations, and only the lowest cost
+// then is fitted on to convergence (its iterations counted in).
 // Starts whose free values equal an earlier start's are skipped; a start outside the bounds is
 // moved inside them; a start the model cannot be solved at is skipped (RunError only when every
 // start fails). `start_labels` (same size as `starts`, may be empty) name the starts; the winner's
