@@ -11,13 +11,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
+#include <string>
 
 #include "ridefit/io/input_error.h"
 #include "ridefit/simulate/esdirk_integrator.h"
 
 namespace ridefit::simulate {
 namespace {
+
+// SUNDIALS' *GetReturnFlagName hand back a malloc'd string the caller frees (AddressSanitizer's
+// leak check found the lost ones).
+std::string owned_flag_name(char* name) {
+  std::string text = name != nullptr ? name : "unknown flag";
+  std::free(name);
+  return text;
+}
 
 // Owns SUNDIALS objects for the length of one integration.
 struct SundialsSession {
@@ -184,8 +194,8 @@ void run_cvode(const OdeSystem& system, const std::vector<double>& output_times_
       double t_last = t_reached;
       CVodeGetCurrentTime(session.memory, &t_last);
       throw RunError(fmt::format("CVODE failed at t = {:.6g} s: {}: {} ({})", t_last,
-                                 CVodeGetReturnFlagName(flag), explain(flag, false),
-                                 session.last_error));
+                                 owned_flag_name(CVodeGetReturnFlagName(flag)),
+                                 explain(flag, false), session.last_error));
     }
   });
   auto& stats = trajectory.statistics;
@@ -236,7 +246,8 @@ void run_rk4(const std::vector<double>& output_times_s, const IntegratorOptions&
       double t_last = t_reached;
       ERKStepGetCurrentTime(session.memory, &t_last);
       throw RunError(fmt::format("ARKODE RK4 failed at t = {:.6g} s: {}: {}", t_last,
-                                 ERKStepGetReturnFlagName(flag), explain(flag, true)));
+                                 owned_flag_name(ERKStepGetReturnFlagName(flag)),
+                                 explain(flag, true)));
     }
   });
   ERKStepGetNumSteps(session.memory, &trajectory.statistics.steps);
