@@ -435,3 +435,21 @@ TEST(ReliabilityCli, SweepNamesTheFileAndKeysWhenSettlingLeavesNothing) {
 
 }  // namespace
 }  // namespace ridefit
+
+namespace ridefit {
+namespace {
+
+// Found by tools/fuzz: a model file holding only a comma hung `modes` (yaml-cpp's LoadAll), and
+// `modes` printed its table header before reading the model.
+TEST(ReliabilityCli, ACommaModelIsAMessageAndModesPrintsNothingBeforeIt) {
+  TempDir dir("reliability_comma");
+  const std::string model = (dir.path() / "comma.yaml").string();
+  std::ofstream(model) << "- sprung_mass_kg\n,\n";
+  const testing::CliRun run = run_cli("modes " + model);
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_TRUE(contains(run.output, "comma.yaml:2:1: not valid YAML")) << run.output;
+  EXPECT_FALSE(contains(run.output, "natural[Hz]")) << "a table header before the error";
+}
+
+}  // namespace
+}  // namespace ridefit

@@ -3,6 +3,8 @@
 
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "command_options.h"
 #include "ridefit/io/quarter_car_file.h"
@@ -24,14 +26,20 @@ void run(const ModesFlags& flags) {
                                               ? std::vector<std::string>{"slip", "stick"}
                                               : std::vector<std::string>{flags.state};
   nlohmann::json summary = {{"model", flags.model_file}, {"states", nlohmann::json::object()}};
+  // Every state's model is read and solved before anything is printed: bad input prints nothing.
+  std::vector<simulate::ModalAnalysis> all_modes;
+  for (const auto& state : states) {
+    const auto file =
+        load_quarter_car_with_set(flags.model_file, flags.overrides, state, "--state");
+    all_modes.push_back(simulate::quarter_car_modes(file.make_model()));
+  }
   if (!flags.json) {
     std::cout << fmt::format("{:<6} {:<6} {:>12} {:>12} {:>9}\n", "state", "mode", "natural[Hz]",
                              "damped[Hz]", "damping");
   }
-  for (const auto& state : states) {
-    const auto file =
-        load_quarter_car_with_set(flags.model_file, flags.overrides, state, "--state");
-    const auto modes = simulate::quarter_car_modes(file.make_model());
+  for (std::size_t s = 0; s < states.size(); ++s) {
+    const std::string& state = states[s];
+    const auto& modes = all_modes[s];
     nlohmann::json list = nlohmann::json::array();
     for (const auto& mode : modes.oscillatory) {
       list.push_back({{"mode", mode.dominant_dof},

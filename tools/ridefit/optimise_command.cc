@@ -172,8 +172,13 @@ void write_tradeoff_csv(const opt::TuningProblem& problem, const Outcome& o,
                         const std::filesystem::path& path) {
   const auto& study = problem.study();
   const std::string metric = study.constraints[study.tradeoff->constraint].metric;
-  const auto [name, unit] = study::split_unit_suffix(metric);
-  const auto [objective, objective_unit] = study::split_unit_suffix(study.objective.metric);
+  // Named copies, not structured bindings: Clang 14 cannot capture those in a lambda.
+  const std::pair<std::string, std::string> limit = study::split_unit_suffix(metric);
+  const std::pair<std::string, std::string> goal = study::split_unit_suffix(study.objective.metric);
+  const std::string& name = limit.first;
+  const std::string& unit = limit.second;
+  const std::string& objective = goal.first;
+  const std::string& objective_unit = goal.second;
   io::write_atomically(path, [&](std::ostream& out) {
     out << fmt::format("limit_{}[{}],feasible[1],{}[{}],{}[{}]", name, unit, objective,
                        objective_unit, name, unit);

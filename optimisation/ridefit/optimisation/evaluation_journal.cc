@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/path_type.h"
 
 namespace ridefit::optimisation {
 namespace {
@@ -116,7 +117,7 @@ std::string EvaluationJournal::key(const std::string& variant, std::span<const d
 EvaluationJournal EvaluationJournal::create(const std::filesystem::path& path,
                                             const std::string& fingerprint,
                                             bool replace_evaluations) {
-  if (std::filesystem::is_directory(path)) {
+  if (io::is_folder(path)) {
     throw InputError(fmt::format("journal {}: is a directory, not a journal file", path.string()));
   }
   const int fd = lock_journal(path);
@@ -150,10 +151,10 @@ EvaluationJournal EvaluationJournal::create(const std::filesystem::path& path,
 
 EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
                                             const std::string& fingerprint, const Shape& shape) {
-  if (std::filesystem::is_directory(path)) {
+  if (io::is_folder(path)) {
     throw InputError(fmt::format("journal {}: is a directory, not a journal file", path.string()));
   }
-  if (!std::filesystem::is_regular_file(path)) {
+  if (!io::exists_as_file(path)) {
     throw InputError(fmt::format("journal {}: no such journal file", path.string()));
   }
   const int fd = lock_journal(path);
@@ -181,16 +182,21 @@ EvaluationJournal EvaluationJournal::resume(const std::filesystem::path& path,
     throw InputError(
         fmt::format("journal {}: line 1 is not JSON; is this a ridefit journal?", path.string()));
   }
-  if (!header.is_object() || header.value("format", "") != kFormat) {
+  // A string member read only when it is one: json::value() throws on another type.
+  const auto text_of = [&](const char* key) -> std::string {
+    const auto it = header.find(key);
+    return it != header.end() && it->is_string() ? it->get<std::string>() : std::string();
+  };
+  if (!header.is_object() || text_of("format") != kFormat) {
     throw InputError(
         fmt::format("journal {}: not a ridefit optimise journal (line 1 has no \"format\": \"{}\")",
                     path.string(), kFormat));
   }
-  if (header.value("study", "") != fingerprint) {
+  if (text_of("study") != fingerprint) {
     throw InputError(fmt::format(
         "journal {}: the journal belongs to another study or to different model or road "
         "files (fingerprint {} here, {} in the journal); start a new journal",
-        path.string(), fingerprint, header.value("study", "")));
+        path.string(), fingerprint, text_of("study")));
   }
   std::map<std::string, JournalRecord> records;
   std::size_t number = 1;

@@ -12,6 +12,7 @@
 #include "ridefit/io/half_car_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/model_kind.h"
+#include "ridefit/io/path_type.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/value_range.h"
 #include "ridefit/io/yaml_map.h"
@@ -137,7 +138,7 @@ LoadCase read_load_case(const io::YamlMap& entry, std::size_t index) {
   LoadCase c;
   c.name = entry.has("name") ? entry.text("name") : fmt::format("case{}", index + 1);
   c.road_file = entry.file("road");
-  if (!std::filesystem::is_regular_file(c.road_file)) {
+  if (!io::exists_as_file(c.road_file)) {
     throw InputError(
         fmt::format("{}: no such excitation file {}", entry.locate("road"), c.road_file.string()));
   }

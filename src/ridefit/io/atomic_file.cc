@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/path_type.h"
 #include "ridefit/io/temporary_files.h"
 
 namespace ridefit::io {
@@ -14,11 +15,11 @@ void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write) {
   const std::filesystem::path dir =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  if (!std::filesystem::is_directory(dir)) {
+  if (!is_folder(dir)) {
     throw InputError(fmt::format("{}: cannot write, directory '{}' does not exist", path.string(),
                                  dir.string()));
   }
-  if (std::filesystem::exists(path) && !std::filesystem::is_regular_file(path)) {
+  if (path_exists(path) && !exists_as_file(path)) {
     throw InputError(
         fmt::format("{}: cannot write, it exists and is not a regular file", path.string()));
   }
@@ -46,15 +47,15 @@ void check_output_file(const std::filesystem::path& path,
                        const std::vector<std::filesystem::path>& inputs, const std::string& flag) {
   namespace fs = std::filesystem;
   const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir)) {
+  if (!is_folder(dir)) {
     throw InputError(
         fmt::format("{} {}: directory '{}' does not exist", flag, path.string(), dir.string()));
   }
-  if (fs::is_directory(path)) {
+  if (is_folder(path)) {
     throw InputError(fmt::format("{} {}: is a directory, expected a file path such as {}/out.csv",
                                  flag, path.string(), path.string()));
   }
-  if (fs::exists(path) && !fs::is_regular_file(path)) {
+  if (path_exists(path) && !exists_as_file(path)) {
     throw InputError(fmt::format("{} {}: exists and is not a regular file", flag, path.string()));
   }
   for (const auto& input : inputs) {
@@ -68,7 +69,7 @@ void check_output_file(const std::filesystem::path& path,
 
 void prepare_output_directory(const std::filesystem::path& path, const std::string& flag) {
   namespace fs = std::filesystem;
-  if (fs::exists(path) && !fs::is_directory(path)) {
+  if (path_exists(path) && !is_folder(path)) {
     throw InputError(fmt::format("{} {}: exists and is not a directory", flag, path.string()));
   }
   std::error_code ec;

@@ -30,7 +30,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 void number_keys(const YAML::Node& node, const std::string& prefix, std::vector<std::string>& out) {
   if (!node.IsMap()) return;
   for (const auto& item : node) {
-    const std::string key = prefix + item.first.as<std::string>();
+    if (!item.first.IsScalar()) continue;  // not a name that could be meant
+    const std::string key = prefix + item.first.Scalar();
     if (item.second.IsMap()) {
       number_keys(item.second, key + ".", out);
     } else if (item.second.IsScalar()) {

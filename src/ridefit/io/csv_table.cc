@@ -15,6 +15,7 @@
 
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/path_type.h"
 
 namespace ridefit::io {
 namespace {
@@ -189,7 +190,7 @@ UnitConversion unit_to_si(const std::string& unit) {
 
 CsvTable CsvTable::read(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!std::filesystem::exists(path)) throw InputError(fmt::format("{}: file not found", file));
+  if (!path_exists(path)) throw InputError(fmt::format("{}: file not found", file));
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot open for reading", file));
 

@@ -10,7 +10,10 @@ void write_model_with_values(const std::filesystem::path& model_file,
                              const std::vector<std::pair<std::string, std::string>>& values,
                              const std::filesystem::path& output_file, const std::string& comment) {
   YAML::Node root = YAML::LoadFile(model_file.string());
-  for (const auto& [key, value] : values) {
+  // Not a structured binding: Clang 14 cannot capture one in the lambda below.
+  for (const auto& entry : values) {
+    const std::string& key = entry.first;
+    const std::string& value = entry.second;
     std::vector<std::string> parts;
     std::size_t from = 0;
     for (std::size_t dot = key.find('.'); dot != std::string::npos; dot = key.find('.', from)) {

@@ -10,6 +10,7 @@
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/path_type.h"
 #include "ridefit/io/temporary_files.h"
 
 namespace ridefit::io {
@@ -83,7 +84,7 @@ void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
       throw InputError(fmt::format("{} {}: that is an input of this run", flag, dir.string()));
     }
   }
-  if (fs::exists(dir) && !fs::is_directory(dir)) {
+  if (path_exists(dir) && !is_folder(dir)) {
     throw InputError(fmt::format("{} {}: exists and is not a directory", flag, dir.string()));
   }
   std::set<std::string> planned;

@@ -1,34 +1,94 @@
 #include "ridefit/io/yaml_map.h"
 
 #include <fmt/core.h>
+#include <yaml-cpp/eventhandler.h>
+#include <yaml-cpp/parser.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <map>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/io/path_type.h"
 
 namespace ridefit::io {
 
+namespace {
+
+// Counts the documents of a YAML stream without building them. yaml-cpp 0.7's LoadAll() loops
+// for ever, allocating, when a document starts with a token its parser does not consume (a
+// ',' where a node should begin: ",", "- a\n,", "---\n,"; upstream issue #1040): each call of
+// HandleNextDocument() then "finds" another empty document at the same place. Such a stall is
+// reported as a syntax error at that place instead.
+class DocumentCounter : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+
+  std::vector<YAML::Mark> starts;
+};
+
+std::size_t count_documents(const std::string& text) {
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  DocumentCounter counter;
+  std::size_t documents = 0;
+  while (parser.HandleNextDocument(counter)) {
+    ++documents;
+    const auto& starts = counter.starts;
+    if (starts.size() >= 2 && starts[starts.size() - 1].pos == starts[starts.size() - 2].pos) {
+      const YAML::Mark& at = starts.back();
+      const char found = at.pos >= 0 && static_cast<std::size_t>(at.pos) < text.size()
+                             ? text[static_cast<std::size_t>(at.pos)]
+                             : ' ';
+      throw YAML::ParserException(
+          at, found == ','
+                  ? std::string("a value cannot start with ','; quote it, or remove the comma")
+                  : fmt::format("unexpected '{}'", found));
+    }
+  }
+  return documents;
+}
+
+}  // namespace
+
 YamlMap YamlMap::load(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path)) {
+  if (!path_exists(path)) {
     throw InputError(fmt::format("{}: file not found", path.string()));
   }
-  if (std::filesystem::is_directory(path)) {
+  if (is_folder(path)) {
     throw InputError(fmt::format("{}: is a directory, expected a YAML file", path.string()));
   }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot be read", path.string()));
+  std::ostringstream content;
+  content << in.rdbuf();  // an empty file sets content's failbit and leaves it empty: fine
+  const std::string text = content.str();
   YAML::Node root;
   try {
-    const std::vector<YAML::Node> documents = YAML::LoadAllFromFile(path.string());
-    if (documents.size() > 1) {
+    const std::size_t documents = count_documents(text);
+    if (documents > 1) {
       throw InputError(
           fmt::format("{}: holds {} YAML documents (separated by ---); expected exactly one",
-                      path.string(), documents.size()));
+                      path.string(), documents));
     }
-    if (!documents.empty()) root = documents.front();
+    if (documents == 1) root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(fmt::format("{}:{}:{}: not valid YAML: {}", path.string(), e.mark.line + 1,
                                  e.mark.column + 1, e.msg));
@@ -45,8 +105,16 @@ YamlMap::YamlMap(YAML::Node node, std::filesystem::path path, std::string where)
   // yaml-cpp keeps duplicate keys and returns the first: a second value would be ignored.
   std::map<std::string, int> seen;
   for (const auto& entry : node_) {
-    const std::string key = entry.first.Scalar();
     const int line = entry.first.Mark().line + 1;
+    // A `? [a, b]` or `? ` (complex or empty) key names nothing ridefit reads.
+    if (!entry.first.IsScalar()) {
+      throw InputError(fmt::format("{}:{}: a key must be a name such as `mass_kg`, not a YAML {}",
+                                   path_.string(), line,
+                                   entry.first.IsNull()       ? "null (an empty `?` key)"
+                                   : entry.first.IsSequence() ? "sequence"
+                                                              : "mapping"));
+    }
+    const std::string key = entry.first.Scalar();
     const auto [it, inserted] = seen.emplace(key, line);
     if (!inserted) {
       throw InputError(fmt::format("{}: duplicate key '{}' (lines {} and {}); give it once",
@@ -271,7 +339,7 @@ std::filesystem::path YamlMap::file(const std::string& key) const {
 void YamlMap::finish() const {
   std::vector<std::string> unknown;
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
+    const std::string key = entry.first.Scalar();  // a scalar: the constructor checked
     if (used_.count(key) == 0) unknown.push_back(key);
   }
   if (unknown.empty()) return;
