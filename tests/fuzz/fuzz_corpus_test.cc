@@ -7,6 +7,7 @@
 #include <iterator>
 #include <ostream>
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 #include "fuzz/parser_fuzz_entries.h"

@@ -27,6 +27,7 @@ TEST(YamlMap, ACommaWhereAValueShouldStartIsASyntaxErrorNotAHang) {
       {"# a comment\n  ,x", ":2:3: not valid YAML"},
       {"a: 1\n...\n,", ":3:1: not valid YAML"},
       {"&anchor ,", ":1:9: not valid YAML"},
+      {"\xEF\xBB\xBF,", "not valid YAML: a value cannot start with ','"},
   };
   for (const auto& c : cases) {
     const std::string path = dir.write("comma.yaml", c.text);

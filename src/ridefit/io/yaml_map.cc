@@ -54,9 +54,10 @@ std::size_t count_documents(const std::string& text) {
     const auto& starts = counter.starts;
     if (starts.size() >= 2 && starts[starts.size() - 1].pos == starts[starts.size() - 2].pos) {
       const YAML::Mark& at = starts.back();
-      const char found = at.pos >= 0 && static_cast<std::size_t>(at.pos) < text.size()
-                             ? text[static_cast<std::size_t>(at.pos)]
-                             : ' ';
+      // yaml-cpp's positions do not count a UTF-8 byte-order mark.
+      const std::size_t bom = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+      const std::size_t index = static_cast<std::size_t>(std::max(at.pos, 0)) + bom;
+      const char found = index < text.size() ? text[index] : ' ';
       throw YAML::ParserException(
           at, found == ','
                   ? std::string("a value cannot start with ','; quote it, or remove the comma")
@@ -110,7 +111,7 @@ YamlMap::YamlMap(YAML::Node node, std::filesystem::path path, std::string where)
     if (!entry.first.IsScalar()) {
       throw InputError(fmt::format("{}:{}: a key must be a name such as `mass_kg`, not a YAML {}",
                                    path_.string(), line,
-                                   entry.first.IsNull()       ? "null (an empty `?` key)"
+                                   entry.first.IsNull()       ? "null (an empty or `~` key)"
                                    : entry.first.IsSequence() ? "sequence"
                                                               : "mapping"));
     }
