@@ -3,24 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <ostream>
+#include <span>
 #include <string>
 #include <typeinfo>
-#include <vector>
 
 #include "fuzz/parser_fuzz_entries.h"
+#include "support/temp_dir.h"
 
 namespace ridefit::fuzz {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::vector<std::uint8_t> bytes_of(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 }  // namespace
 
@@ -42,7 +36,9 @@ TEST_P(FuzzCorpus, EveryInputIsReadOrRefusedWithAMessage) {
     for (const auto& entry : fs::directory_iterator(dir)) {
       if (!entry.is_regular_file()) continue;
       ++inputs;
-      const auto input = bytes_of(entry.path());
+      const std::string text = testing::text_of(entry.path());
+      const std::span<const std::uint8_t> input(reinterpret_cast<const std::uint8_t*>(text.data()),
+                                                text.size());
       try {
         if (t.run(input) == Outcome::kAccepted) ++accepted;
       } catch (const std::exception& e) {
