@@ -9,7 +9,7 @@
 #include <string>
 
 #include "ridefit/io/quarter_car_file.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "support/passat.h"
 #include "support/throws_input_error.h"
 

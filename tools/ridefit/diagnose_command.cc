@@ -26,7 +26,7 @@
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/staged_folder.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/road_input.h"
 #include "subcommands.h"
 
@@ -209,11 +209,11 @@ std::vector<std::pair<std::string, std::string>> changed_keys(const model::Quart
   if (before.damper_state() != after.damper_state()) {
     values.emplace_back("damper_state", damper_state_name(after.damper_state()));
   }
-  for (std::size_t i = 0; i < model::kQuarterCarParameterNames.size(); ++i) {
+  for (std::size_t i = 0; i < model::kQuarterCarParameters.size(); ++i) {
     const double a = model::quarter_car_parameter(before.parameters(), i);
     const double b = model::quarter_car_parameter(after.parameters(), i);
     if (a != b)
-      values.emplace_back(std::string(model::kQuarterCarParameterNames[i]), value_text(b));
+      values.emplace_back(std::string(model::kQuarterCarParameters[i].key), value_text(b));
   }
   if (before.parameters().tyre_lift_off != after.parameters().tyre_lift_off) {
     values.emplace_back("tyre_lift_off", after.parameters().tyre_lift_off ? "true" : "false");

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting {
 

@@ -17,7 +17,7 @@
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/input_error.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
 #include "ridefit/signal/equivalent_dof.h"
@@ -40,8 +40,8 @@ T& field(model::QuarterCarParameters<T>& p, std::size_t index) {
 std::size_t parameter_index(const std::string& name) {
   if (const auto index = model::quarter_car_parameter_index(name)) return *index;
   std::string list;
-  for (const auto known : model::kQuarterCarParameterNames) {
-    list += (list.empty() ? "" : ", ") + std::string(known);
+  for (const auto& row : model::kQuarterCarParameters) {
+    list += (list.empty() ? "" : ", ") + std::string(row.key);
   }
   throw InputError(fmt::format("'{}' is not a quarter-car parameter; one of: {}", name, list));
 }

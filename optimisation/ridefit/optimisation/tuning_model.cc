@@ -6,6 +6,8 @@
 #include <stdexcept>
 
 #include "ridefit/io/input_error.h"
+#include "ridefit/model/half_car_parameter_table.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::optimisation {
 namespace {
@@ -13,6 +15,21 @@ namespace {
 bool is_stick_slip_strut(const model::AxleTopology& axle) {
   return axle.suspension == model::AxleSuspension::kStrut &&
          axle.damper_state == model::DamperState::kStickSlip;
+}
+
+// The friction, load-case and design values in the order build_tuning_model applies them.
+std::vector<ModelValue> study_values(const TuningStudy& study, const LoadCase& load_case,
+                                     std::span<const double> design_values) {
+  std::vector<ModelValue> values = study.friction_values;
+  values.insert(values.end(), load_case.model_values.begin(), load_case.model_values.end());
+  for (std::size_t v = 0; v < study.design.size() && v < design_values.size(); ++v) {
+    for (const auto& key : study.design[v].keys) values.emplace_back(key, design_values[v]);
+  }
+  return values;
+}
+
+[[noreturn]] void not_a_key(const std::string& origin, const std::string& key) {
+  throw InputError(fmt::format("{}: '{}' is not a number of the model", origin, key));
 }
 
 }  // namespace
@@ -34,11 +51,7 @@ std::vector<std::pair<std::string, std::string>> tuned_values(
 TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant,
                                const LoadCase& load_case, std::span<const double> design_values,
                                const std::string& origin) {
-  std::vector<ModelValue> values = study.friction_values;
-  values.insert(values.end(), load_case.model_values.begin(), load_case.model_values.end());
-  for (std::size_t v = 0; v < study.design.size(); ++v) {
-    for (const auto& key : study.design[v].keys) values.emplace_back(key, design_values[v]);
-  }
+  const std::vector<ModelValue> values = study_values(study, load_case, design_values);
   TuningModel model;
   if (study.kind == ModelKind::kQuarterCar) {
     std::map<std::string, double> overrides;
@@ -95,6 +108,50 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
     if (changed) file = io::load_half_car(study.model_file, overrides, origin);
   }
   model.half = std::move(file);
+  return model;
+}
+
+TuningModel load_base_model(const TuningStudy& study, const std::string& origin) {
+  TuningStudy settings_only = study;
+  settings_only.friction_values.clear();
+  settings_only.design.clear();
+  return build_tuning_model(settings_only, FrictionVariant::kStudy, LoadCase{}, {}, origin);
+}
+
+TuningModel edit_tuning_model(const TuningModel& base, const TuningStudy& study,
+                              FrictionVariant variant, const LoadCase& load_case,
+                              std::span<const double> design_values, const std::string& origin) {
+  TuningModel model = base;
+  const std::vector<ModelValue> values = study_values(study, load_case, design_values);
+  std::optional<model::ParameterError> error;
+  if (model.quarter) {
+    auto& p = model.quarter->parameters;
+    for (const auto& [key, value] : values) {
+      const auto index = model::quarter_car_parameter_index(key);
+      if (!index) not_a_key(origin, key);
+      model::set_quarter_car_parameter(p, *index, value);
+    }
+    if (variant == FrictionVariant::kBlind &&
+        model.quarter->damper_state == model::DamperState::kStickSlip) {
+      model.quarter->damper_state = model::DamperState::kSlip;
+    }
+    error = model::validate(p);
+  } else {
+    auto& p = model.half->parameters;
+    auto& topology = model.half->topology;
+    for (const auto& [key, value] : values) {
+      const auto field = model::half_car_field(p, topology.control, key);
+      if (!field) not_a_key(origin, key);
+      *field->value = value;
+    }
+    if (variant == FrictionVariant::kBlind) {
+      for (auto* axle : {&topology.front, &topology.rear}) {
+        if (is_stick_slip_strut(*axle)) axle->damper_state = model::DamperState::kSlip;
+      }
+    }
+    error = model::validate(p, topology);
+  }
+  if (error) throw InputError(fmt::format("{}: {}", origin, error->text()));
   return model;
 }
 

@@ -29,6 +29,18 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
                                const LoadCase& load_case, std::span<const double> design_values,
                                const std::string& origin);
 
+// The study's model with its `set:` settings (topology words and values), read from the model
+// file once; the evaluations edit copies of it in memory (edit_tuning_model).
+TuningModel load_base_model(const TuningStudy& study, const std::string& origin);
+
+// build_tuning_model's model without a file: `base` (load_base_model's) with the same values
+// set through the parameter tables (model/*_parameter_table.h) and checked by their validate().
+// The study loader has built every case and every corner of the design box from the file, so
+// within the bounds this is the same model; InputError naming `origin` and the key otherwise.
+TuningModel edit_tuning_model(const TuningModel& base, const TuningStudy& study,
+                              FrictionVariant variant, const LoadCase& load_case,
+                              std::span<const double> design_values, const std::string& origin);
+
 // Every key an optimised model file changes, as text: the study's `set:` values, its friction
 // values, then the design values (numbers with 17 significant digits).
 std::vector<std::pair<std::string, std::string>> tuned_values(

@@ -16,7 +16,9 @@ std::string variant_name(FrictionVariant variant, Accuracy accuracy) {
 }
 
 TuningProblem::TuningProblem(TuningStudy study, EvaluationJournal* journal)
-    : study_(std::move(study)), journal_(journal) {
+    : study_(std::move(study)),
+      base_(load_base_model(study_, fmt::format("{}: set", study_.study_file.string()))),
+      journal_(journal) {
   roads_.resize(study_.load_cases.size());
   study::parallel_for(roads_.size(), study_.evaluation.threads,
                       [&](std::size_t c) { roads_[c] = prepare_load_case_road(study_, c); });
@@ -98,7 +100,8 @@ Evaluation TuningProblem::evaluate(FrictionVariant variant, Accuracy accuracy,
     for (std::size_t v = 0; v < x.size(); ++v) {
       origin += fmt::format(" {}={:g}", study_.design[v].name, x[v]);
     }
-    const TuningModel model = build_tuning_model(study_, variant, study_.load_cases[c], x, origin);
+    const TuningModel model =
+        edit_tuning_model(base_, study_, variant, study_.load_cases[c], x, origin);
     try {
       metrics[c] = evaluate_load_case(study_, model, roads_[c], accuracy,
                                       variant == FrictionVariant::kStudy);

@@ -72,6 +72,7 @@ class TuningProblem {
                     std::vector<bool> frequency_domain, bool reused) const;
 
   TuningStudy study_;
+  TuningModel base_;  // the study's model, read once; evaluations edit copies in memory
   EvaluationJournal* journal_;
   std::vector<LoadCaseRoad> roads_;
   std::map<std::string, Evaluation> memory_;

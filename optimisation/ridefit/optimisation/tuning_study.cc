@@ -16,7 +16,7 @@
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/value_range.h"
 #include "ridefit/io/yaml_map.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/optimisation/tuning_model.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/study/half_car_metrics.h"
@@ -80,7 +80,7 @@ void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const 
   bool known = false;
   if (study.kind == ModelKind::kQuarterCar) {
     known = model::quarter_car_parameter_index(key).has_value();
-    for (const auto& name : model::kQuarterCarParameterNames) candidates.emplace_back(name);
+    for (const auto& row : model::kQuarterCarParameters) candidates.emplace_back(row.key);
   } else {
     known = io::half_car_has_key(study.model_file, key);
   }

@@ -7,20 +7,22 @@
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/yaml_map.h"
+#include "ridefit/model/half_car_parameter_table.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::io {
 namespace {
 
-// Plausibility limits, as for the quarter car: far beyond any road vehicle, close enough to
-// catch a unit slip or a typo before it becomes a NaN in the solver.
-constexpr double kMaxMass_kg = 1e5;
-constexpr double kMaxInertia_kg_m2 = 1e6;
-constexpr double kMaxStiffness_N_per_m = 1e10;
-constexpr double kMaxDamping_Ns_per_m = 1e7;
-constexpr double kMaxDistance_m = 20.0;
-// A damper's compression coefficient over its rebound coefficient: > 0 (the strut's damper
-// rate divides by it), at most 10 (beyond any real valving; catches a typed percentage).
-constexpr double kMaxCompressionToReboundRatio = 10.0;
+// The rows of model/quarter_car_parameter_table.h and model/half_car_parameter_table.h.
+const model::ParameterInfo& axle_row(std::string_view key) {
+  return model::kQuarterCarParameters[model::quarter_car_parameter_index(key).value()];
+}
+
+template <std::size_t N>
+double read(const YamlMap& map, const std::array<model::ParameterInfo, N>& rows, std::size_t i) {
+  return map.parameter(rows[i]);
+}
+
 constexpr double kSymmetricDamper = 1.0;
 
 // Keys each axle may leave out, because alone they have a default (a file without them means
@@ -44,24 +46,22 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
     topology.damper_state =
         parse_damper_state(axle.text("damper_state"), axle.locate("damper_state"));
   }
-  p.unsprung_mass_kg = axle.positive_up_to("unsprung_mass_kg", kMaxMass_kg);
-  p.tyre_stiffness_N_per_m = axle.positive_up_to("tyre_stiffness_N_per_m", kMaxStiffness_N_per_m);
-  p.tyre_damping_Ns_per_m = axle.non_negative_up_to("tyre_damping_Ns_per_m", kMaxDamping_Ns_per_m);
-  p.spring_stiffness_N_per_m =
-      axle.positive_up_to("spring_stiffness_N_per_m", kMaxStiffness_N_per_m);
+  p.unsprung_mass_kg = axle.parameter(axle_row("unsprung_mass_kg"));
+  p.tyre_stiffness_N_per_m = axle.parameter(axle_row("tyre_stiffness_N_per_m"));
+  p.tyre_damping_Ns_per_m = axle.parameter(axle_row("tyre_damping_Ns_per_m"));
+  p.spring_stiffness_N_per_m = axle.parameter(axle_row("spring_stiffness_N_per_m"));
   // A strut's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0 there.
-  p.damping_Ns_per_m = strut ? axle.positive_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m)
-                             : axle.non_negative_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m);
+  p.damping_Ns_per_m =
+      strut ? axle.parameter(axle_row("damping_Ns_per_m"))
+            : axle.non_negative_up_to("damping_Ns_per_m", axle_row("damping_Ns_per_m").upper);
   // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it.
   p.compression_to_rebound_ratio = kSymmetricDamper;
   if (axle.has("compression_to_rebound_ratio")) {
-    p.compression_to_rebound_ratio =
-        axle.positive_up_to("compression_to_rebound_ratio", kMaxCompressionToReboundRatio);
+    p.compression_to_rebound_ratio = axle.parameter(axle_row("compression_to_rebound_ratio"));
   }
   p.top_mount_stiffness_N_per_m = 1.0;
   if (strut || axle.has("top_mount_stiffness_N_per_m")) {
-    p.top_mount_stiffness_N_per_m =
-        axle.positive_up_to("top_mount_stiffness_N_per_m", kMaxStiffness_N_per_m);
+    p.top_mount_stiffness_N_per_m = axle.parameter(axle_row("top_mount_stiffness_N_per_m"));
   }
   const bool friction = strut && topology.damper_state == model::DamperState::kStickSlip;
   p.dahl_sigma0_N_per_m = 1.0;
@@ -69,26 +69,25 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
   p.dahl_exponent = 1.0;
   if (friction || axle.has("dahl_sigma0_N_per_m") || axle.has("coulomb_force_N") ||
       axle.has("dahl_exponent")) {
-    p.dahl_sigma0_N_per_m = axle.positive_up_to("dahl_sigma0_N_per_m", 1e3 * kMaxStiffness_N_per_m);
-    p.coulomb_force_N = axle.non_negative_up_to("coulomb_force_N", 1e5);
-    p.dahl_exponent = axle.number_in("dahl_exponent", 0.1, 10.0);
+    p.dahl_sigma0_N_per_m = axle.parameter(axle_row("dahl_sigma0_N_per_m"));
+    p.coulomb_force_N = axle.parameter(axle_row("coulomb_force_N"));
+    p.dahl_exponent = axle.parameter(axle_row("dahl_exponent"));
   }
   // A controlled damper (the same keys and limits as the quarter car's).
   if (axle.has("damping_per_command_Ns_per_m")) {
-    p.damping_per_command_Ns_per_m = axle.number_in("damping_per_command_Ns_per_m", -1e5, 1e6);
+    p.damping_per_command_Ns_per_m = axle.parameter(axle_row("damping_per_command_Ns_per_m"));
   }
   if (axle.has("coulomb_force_per_command_N")) {
-    p.coulomb_force_per_command_N = axle.number_in("coulomb_force_per_command_N", -1e4, 1e4);
+    p.coulomb_force_per_command_N = axle.parameter(axle_row("coulomb_force_per_command_N"));
   }
-  if (axle.has("command_lag_s")) p.command_lag_s = axle.number_in("command_lag_s", 0.0, 1.0);
+  if (axle.has("command_lag_s")) p.command_lag_s = axle.parameter(axle_row("command_lag_s"));
   axle.finish();
   return {topology, p};
 }
 
 model::SuspendedMass<double> read_mass(const YamlMap& m) {
-  return {m.positive_up_to("mass_kg", kMaxMass_kg),
-          m.positive_up_to("stiffness_N_per_m", kMaxStiffness_N_per_m),
-          m.non_negative_up_to("damping_Ns_per_m", kMaxDamping_Ns_per_m)};
+  const auto& rows = model::kSuspendedMassParameters;
+  return {read(m, rows, 0), read(m, rows, 1), read(m, rows, 2)};
 }
 
 // The limits and gains are required where the law uses them and checked wherever given, so a
@@ -101,11 +100,13 @@ model::SemiActiveControl read_control(const YamlMap& c) {
                 : law == "groundhook" ? model::ControlLaw::kGroundhook
                                       : model::ControlLaw::kHybrid;
   const bool active = control.law != model::ControlLaw::kPassive;
-  auto read = [&](const char* key, bool required, double& value) {
-    if (required || c.has(key)) value = c.non_negative_up_to(key, kMaxDamping_Ns_per_m);
+  // Rows 0-3 of model::kControlParameters: the two limits and the two laws' coefficients.
+  const auto& rows = model::kControlParameters;
+  auto read_if = [&](std::size_t row, bool required, double& value) {
+    if (required || c.has(std::string(rows[row].key))) value = c.parameter(rows[row]);
   };
-  read("min_damping_Ns_per_m", active, control.min_damping_Ns_per_m);
-  read("max_damping_Ns_per_m", active, control.max_damping_Ns_per_m);
+  read_if(0, active, control.min_damping_Ns_per_m);
+  read_if(1, active, control.max_damping_Ns_per_m);
   if (control.min_damping_Ns_per_m > control.max_damping_Ns_per_m) {
     throw InputError(fmt::format(
         "{} is {} Ns/m, above max_damping_Ns_per_m {} Ns/m; a damper's limits need c_min <= "
@@ -117,15 +118,13 @@ model::SemiActiveControl read_control(const YamlMap& c) {
     throw InputError(
         fmt::format("{} must be > 0 for a {} damper", c.locate("max_damping_Ns_per_m"), law));
   }
-  read("skyhook_damping_Ns_per_m",
-       control.law == model::ControlLaw::kSkyhook || control.law == model::ControlLaw::kHybrid,
-       control.skyhook_damping_Ns_per_m);
-  read("groundhook_damping_Ns_per_m",
-       control.law == model::ControlLaw::kGroundhook || control.law == model::ControlLaw::kHybrid,
-       control.groundhook_damping_Ns_per_m);
-  if (control.law == model::ControlLaw::kHybrid || c.has("skyhook_share")) {
-    control.skyhook_share = c.number_in("skyhook_share", 0.0, 1.0);
-  }
+  read_if(2,
+          control.law == model::ControlLaw::kSkyhook || control.law == model::ControlLaw::kHybrid,
+          control.skyhook_damping_Ns_per_m);
+  read_if(
+      3, control.law == model::ControlLaw::kGroundhook || control.law == model::ControlLaw::kHybrid,
+      control.groundhook_damping_Ns_per_m);
+  read_if(4, control.law == model::ControlLaw::kHybrid, control.skyhook_share);
   c.finish();
   return control;
 }
@@ -134,11 +133,12 @@ HalfCarFile read_half_car(const YamlMap& file) {
   file.choice("model", {"half_car"});
   HalfCarFile result{};
   auto& p = result.parameters;
-  p.body_mass_kg = file.positive_up_to("body_mass_kg", kMaxMass_kg);
-  p.pitch_inertia_kg_m2 = file.positive_up_to("pitch_inertia_kg_m2", kMaxInertia_kg_m2);
-  p.front_axle_distance_m = file.positive_up_to("front_axle_distance_m", kMaxDistance_m);
-  p.rear_axle_distance_m = file.positive_up_to("rear_axle_distance_m", kMaxDistance_m);
-  p.seat_distance_m = file.number_in("seat_distance_m", -kMaxDistance_m, kMaxDistance_m);
+  const auto& body = model::kHalfCarBodyParameters;
+  p.body_mass_kg = read(file, body, 0);
+  p.pitch_inertia_kg_m2 = read(file, body, 1);
+  p.front_axle_distance_m = read(file, body, 2);
+  p.rear_axle_distance_m = read(file, body, 3);
+  p.seat_distance_m = read(file, body, 4);
   std::tie(result.topology.front, p.front) = read_axle(file.map("front"));
   std::tie(result.topology.rear, p.rear) = read_axle(file.map("rear"));
   const YamlMap seat = file.map("seat");

@@ -195,6 +195,13 @@ double YamlMap::positive_up_to(const std::string& key, double hi) const {
   return v;
 }
 
+double YamlMap::parameter(const model::ParameterInfo& row) const {
+  const std::string key(row.key);
+  if (row.lower == 0.0 && row.lower_open) return positive_up_to(key, row.upper);
+  if (row.lower == 0.0) return non_negative_up_to(key, row.upper);
+  return number_in(key, row.lower, row.upper);
+}
+
 double YamlMap::non_negative_up_to(const std::string& key, double hi) const {
   const double v = number(key);
   if (v < 0.0 || v > hi) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "ridefit/model/parameter_info.h"
+
 namespace ridefit::io {
 
 // Strict, self-describing access to one YAML mapping of a user's file.
@@ -32,6 +34,9 @@ class YamlMap {
   double non_negative(const std::string& key) const;  // >= 0
   // Physically plausible ranges: 0 < v <= hi, and 0 <= v <= hi.
   double positive_up_to(const std::string& key, double hi) const;
+  // A model parameter within its table row's range (model/parameter_info.h), worded as
+  // positive_up_to, non_negative_up_to or number_in.
+  double parameter(const model::ParameterInfo& row) const;
   double non_negative_up_to(const std::string& key, double hi) const;
   double number_in(const std::string& key, double lo, double hi) const;  // lo <= v <= hi
   double number_or(const std::string& key, double fallback) const;

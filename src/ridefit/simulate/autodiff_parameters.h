@@ -1,7 +1,7 @@
 #pragma once
 
 #include "ridefit/model/quarter_car.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::simulate {
 
@@ -15,7 +15,7 @@ template <typename AutoDiff>
 model::QuarterCarParameters<AutoDiff> autodiff_parameters(
     const model::QuarterCarParameters<double>& values, int n) {
   model::QuarterCarParameters<AutoDiff> p = values.template cast<AutoDiff>();
-  for (std::size_t i = 0; i < model::kQuarterCarParameterNames.size(); ++i) {
+  for (std::size_t i = 0; i < model::kQuarterCarParameters.size(); ++i) {
     model::quarter_car_parameter(p, i).derivatives().setZero(n);
   }
   return p;

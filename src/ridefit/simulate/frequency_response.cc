@@ -41,4 +41,22 @@ Eigen::MatrixXcd FrequencyResponse::at(double frequency_Hz) const {
          system_.D.cast<std::complex<double>>();
 }
 
+Eigen::VectorXcd FrequencyResponse::at(double frequency_Hz, const Eigen::VectorXcd& u) const {
+  if (u.size() != system_.B.cols()) {
+    throw std::invalid_argument("FrequencyResponse::at: u needs one entry per input");
+  }
+  const std::complex<double> s(0.0, 2.0 * std::numbers::pi * frequency_Hz);
+  if (eigenbasis_) {
+    const Eigen::VectorXcd modal =
+        (modal_inputs_ * u).cwiseQuotient((s - eigenvalues_.array()).matrix());
+    return output_modes_ * modal + system_.D.cast<std::complex<double>>() * u;
+  }
+  const auto n = system_.A.rows();
+  const Eigen::MatrixXcd shifted =
+      s * Eigen::MatrixXcd::Identity(n, n) - system_.A.cast<std::complex<double>>();
+  return system_.C.cast<std::complex<double>>() *
+             shifted.partialPivLu().solve(system_.B.cast<std::complex<double>>() * u) +
+         system_.D.cast<std::complex<double>>() * u;
+}
+
 }  // namespace ridefit::simulate

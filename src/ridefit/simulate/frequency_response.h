@@ -18,6 +18,9 @@ class FrequencyResponse {
 
   // outputs × inputs at `frequency_Hz`.
   Eigen::MatrixXcd at(double frequency_Hz) const;
+  // H(jω)·u, the outputs' response to one combination `u` of the inputs (e.g. two wheels' road
+  // inputs with the rear's delay): O(n·(inputs + outputs)) in the eigenbasis, no matrix product.
+  Eigen::VectorXcd at(double frequency_Hz, const Eigen::VectorXcd& u) const;
   bool uses_eigenbasis() const { return eigenbasis_; }
 
  private:

@@ -23,6 +23,7 @@ HalfCarSpectra half_car_spectra(const model::HalfCar& car, const road::RoadSpect
   HalfCarSpectra spectra;
   spectra.frequency_Hz.resize(points);
   for (auto& psd : spectra.psd) psd.resize(points);
+  Eigen::VectorXcd inputs = Eigen::VectorXcd::Zero(simulate::kRearRoadRate + 1);
   const double ratio = std::log(f_high / f_low) / static_cast<double>(points - 1);
   for (std::size_t k = 0; k < points; ++k) {
     const double f = f_low * std::exp(ratio * static_cast<double>(k));
@@ -30,12 +31,14 @@ HalfCarSpectra half_car_spectra(const model::HalfCar& car, const road::RoadSpect
     const double road_psd = road.spectrum.psd_m3(f / speed) / speed;  // m²/Hz
     const std::complex<double> jw(0.0, 2.0 * std::numbers::pi * f);
     const std::complex<double> delay = std::exp(-jw * tau);
-    const Eigen::MatrixXcd h = response.at(f);
+    // The road under both wheels: z_f = z, ż_f = jω·z, the rear the same a wheelbase later.
+    inputs(simulate::kFrontRoad) = 1.0;
+    inputs(simulate::kFrontRoadRate) = jw;
+    inputs(simulate::kRearRoad) = delay;
+    inputs(simulate::kRearRoadRate) = delay * jw;
+    const Eigen::VectorXcd total = response.at(f, inputs);
     for (int y = 0; y < simulate::kHalfCarLinearOutputs; ++y) {
-      const std::complex<double> total =
-          h(y, simulate::kFrontRoad) + jw * h(y, simulate::kFrontRoadRate) +
-          delay * (h(y, simulate::kRearRoad) + jw * h(y, simulate::kRearRoadRate));
-      spectra.psd[static_cast<std::size_t>(y)][k] = std::norm(total) * road_psd;
+      spectra.psd[static_cast<std::size_t>(y)][k] = std::norm(total(y)) * road_psd;
     }
   }
   return spectra;
@@ -50,20 +53,28 @@ HalfCarMetrics half_car_spectral_metrics(const HalfCarSpectra& spectra,
                                          const model::HalfCarParameters<double>& parameters) {
   const auto& f = spectra.frequency_Hz;
   // ∫ S df = ∫ S·f d(ln f), trapezoid on the log grid.
-  auto integral = [&](HalfCarLinearOutput y, const comfort::Weighting* weighting) {
+  // |W(f)|² on the grid, once per weighting (not once per output and trapezoid end).
+  auto squared = [&](comfort::Weighting weighting) {
+    std::vector<double> w2(f.size());
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      const double w = comfort::weighting_magnitude(weighting, f[k]);
+      w2[k] = w * w;
+    }
+    return w2;
+  };
+  const std::vector<double> wk = squared(comfort::Weighting::kWk);
+  const std::vector<double> we = squared(comfort::Weighting::kWe);
+  auto integral = [&](HalfCarLinearOutput y, const std::vector<double>* weighting) {
     const auto& psd = spectra.psd[static_cast<std::size_t>(y)];
     double sum = 0.0;
     auto integrand = [&](std::size_t k) {
-      const double w = weighting ? comfort::weighting_magnitude(*weighting, f[k]) : 1.0;
-      return w * w * psd[k] * f[k];
+      return (weighting ? (*weighting)[k] : 1.0) * psd[k] * f[k];
     };
     for (std::size_t k = 0; k + 1 < f.size(); ++k) {
       sum += 0.5 * (integrand(k) + integrand(k + 1)) * std::log(f[k + 1] / f[k]);
     }
     return std::sqrt(sum);
   };
-  const comfort::Weighting wk = comfort::Weighting::kWk;
-  const comfort::Weighting we = comfort::Weighting::kWe;
   HalfCarMetrics m;
   m.seat_acc_wk_rms_m_per_s2 = integral(simulate::kSeatAcc, &wk);
   m.lower_body_acc_wk_rms_m_per_s2 = integral(simulate::kLowerBodyAcc, &wk);

@@ -17,7 +17,7 @@
 #include "ridefit/fitting/psd_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/input_error.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"
 #include "support/hidden_effect_record.h"

@@ -6,7 +6,7 @@
 
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/input_error.h"
-#include "ridefit/model/quarter_car_parameter_names.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 

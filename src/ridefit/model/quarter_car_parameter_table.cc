@@ -1,0 +1,96 @@
+#include "ridefit/model/quarter_car_parameter_table.h"
+
+#include <fmt/core.h>
+
+namespace ridefit::model {
+namespace {
+
+constexpr std::size_t index_of(std::string_view key) {
+  return quarter_car_parameter_index(key).value();
+}
+
+constexpr std::size_t kCoulomb = index_of("coulomb_force_N");
+constexpr std::size_t kStaticFriction = index_of("static_friction_force_N");
+
+// `a` and `b` switch one effect on together (> 0) or leave it off (0).
+std::optional<ParameterError> together(const ParameterInfo& a, double va, const ParameterInfo& b,
+                                       double vb) {
+  if ((va > 0.0) == (vb > 0.0)) return std::nullopt;
+  const ParameterInfo& set = va > 0.0 ? a : b;
+  const ParameterInfo& missing = va > 0.0 ? b : a;
+  return ParameterError{
+      std::string(set.key),
+      fmt::format("needs '{}' > 0 as well ({}); both or neither", missing.key, missing.meaning)};
+}
+
+}  // namespace
+
+std::optional<ParameterError> validate(const QuarterCarParameters<double>& p) {
+  for (std::size_t i = 0; i < kQuarterCarParameters.size(); ++i) {
+    if (auto error = check_range(kQuarterCarParameters[i], quarter_car_parameter(p, i))) {
+      return error;
+    }
+  }
+  constexpr auto& k_s = quarter_car_row("top_mount_small_amplitude_stiffness_N_per_m");
+  constexpr auto& delta0 = quarter_car_row("top_mount_transition_deflection_m");
+  constexpr auto& k_l = quarter_car_row("top_mount_stiffness_N_per_m");
+  if (auto error = together(k_s, p.top_mount_small_amplitude_stiffness_N_per_m, delta0,
+                            p.top_mount_transition_deflection_m)) {
+    return error;
+  }
+  if (p.top_mount_transition_deflection_m > 0.0 &&
+      p.top_mount_small_amplitude_stiffness_N_per_m < p.top_mount_stiffness_N_per_m) {
+    return ParameterError{std::string(k_s.key),
+                          fmt::format("is {}, expected at least '{}' {} (the large-amplitude "
+                                      "stiffness)",
+                                      p.top_mount_small_amplitude_stiffness_N_per_m, k_l.key,
+                                      p.top_mount_stiffness_N_per_m)};
+  }
+  if (auto error =
+          together(quarter_car_row("bump_stop_stiffness_N_per_m"), p.bump_stop_stiffness_N_per_m,
+                   quarter_car_row("bump_stop_clearance_m"), p.bump_stop_clearance_m)) {
+    return error;
+  }
+  constexpr auto& c_h = quarter_car_row("damping_above_knee_Ns_per_m");
+  if (auto error = together(quarter_car_row("damper_knee_velocity_m_per_s"),
+                            p.damper_knee_velocity_m_per_s, c_h, p.damping_above_knee_Ns_per_m)) {
+    return error;
+  }
+  if (p.damping_above_knee_Ns_per_m > p.damping_Ns_per_m) {
+    return ParameterError{
+        std::string(c_h.key),
+        fmt::format("is {}, expected a value <= {} (at most '{}': the knee is digressive)",
+                    p.damping_above_knee_Ns_per_m, p.damping_Ns_per_m,
+                    quarter_car_row("damping_Ns_per_m").key)};
+  }
+  if (p.stribeck_velocity_m_per_s > 0.0) {
+    const auto& v_s = quarter_car_row("stribeck_velocity_m_per_s");
+    if (!(p.coulomb_force_N > 0.0)) {
+      return ParameterError{std::string(v_s.key),
+                            fmt::format("needs Dahl friction: '{}' > 0 (it is {})",
+                                        kQuarterCarParameters[kCoulomb].key, p.coulomb_force_N)};
+    }
+    if (p.static_friction_force_N < p.coulomb_force_N) {
+      return ParameterError{
+          std::string(kQuarterCarParameters[kStaticFriction].key),
+          fmt::format("is {}, expected at least '{}' {}: friction breaks away at or above its "
+                      "sliding level",
+                      p.static_friction_force_N, kQuarterCarParameters[kCoulomb].key,
+                      p.coulomb_force_N)};
+    }
+  }
+  if (p.sensors.acc_sensor_order != 1 && p.sensors.acc_sensor_order != 2) {
+    return ParameterError{"acc_sensor_order",
+                          fmt::format("is {}, expected 1 or 2", p.sensors.acc_sensor_order)};
+  }
+  return std::nullopt;
+}
+
+void set_quarter_car_parameter(QuarterCarParameters<double>& p, std::size_t index, double value) {
+  if (index == kCoulomb && p.static_friction_force_N == p.coulomb_force_N) {
+    p.static_friction_force_N = value;
+  }
+  quarter_car_parameter(p, index) = value;
+}
+
+}  // namespace ridefit::model
