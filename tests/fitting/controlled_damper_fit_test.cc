@@ -116,8 +116,8 @@ TEST(ControlledStrut, TangentsMatchCentralDifferencesOnFrozenSteps) {
       scale = std::max(scale, std::abs(exact));
       worst = std::max(worst, std::abs(fd - exact));
     }
-    EXPECT_GT(scale, 0.0) << kStrutParameters[fields[j]].name;
-    EXPECT_LT(worst, 1e-4 * scale) << kStrutParameters[fields[j]].name;
+    EXPECT_GT(scale, 0.0) << kStrutParameters[fields[j]].name();
+    EXPECT_LT(worst, 1e-4 * scale) << kStrutParameters[fields[j]].name();
   }
 }
 

@@ -160,7 +160,7 @@ std::pair<std::vector<std::pair<std::string, std::string>>, std::string> changed
     const double old_value = fitting::strut_parameter(before, i);
     const double new_value = fitting::strut_parameter(after, i);
     if (old_value == new_value) continue;
-    const std::string name(fitting::kStrutParameters[i].name);
+    const std::string name(fitting::kStrutParameters[i].name());
     if (fitting::kStrutParameters[i].in_model_file) {
       keys.emplace_back(name, fmt::format("{:.6g}", new_value));
     } else {

@@ -246,7 +246,7 @@ void write_rig_dataset(const Dataset& d, const model::StrutTestParameters<double
   truth["effects"] = YAML::Node(YAML::NodeType::Sequence);
   for (const auto& id : d.effects) truth["effects"].push_back(id);
   for (std::size_t p = 0; p < fitting::kStrutParameters.size(); ++p) {
-    truth["strut"][std::string(fitting::kStrutParameters[p].name)] =
+    truth["strut"][std::string(fitting::kStrutParameters[p].name())] =
         fitting::strut_parameter(strut, p);
   }
   truth["sample_rate_Hz"] = d.sample_rate_Hz;

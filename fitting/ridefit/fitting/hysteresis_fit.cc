@@ -90,7 +90,7 @@ ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residual
 }
 
 std::string describe(const Block& block, const std::vector<HysteresisRecord>& records) {
-  const std::string name(kStrutParameters[block.parameter].name);
+  const std::string name(kStrutParameters[block.parameter].name());
   return block.record < 0
              ? name
              : name + " (" + records[static_cast<std::size_t>(block.record)].source + ")";
@@ -194,7 +194,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
       throw InputError(fmt::format(
           "the start value of {} is {}, outside its bounds [{}, {}]; set it in the model file or "
           "widen the bounds",
-          kStrutParameters[index].name, v, bounds[index].first, bounds[index].second));
+          kStrutParameters[index].name(), v, bounds[index].first, bounds[index].second));
     }
   }
 
@@ -419,7 +419,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   }
   for (std::size_t b = 0; b < n; ++b) {
     FittedParameter p;
-    p.name = std::string(kStrutParameters[blocks[b].parameter].name);
+    p.name = std::string(kStrutParameters[blocks[b].parameter].name());
     if (blocks[b].record >= 0) p.file = records[static_cast<std::size_t>(blocks[b].record)].source;
     p.value = values[b] * units[b];
     if (have_covariance)

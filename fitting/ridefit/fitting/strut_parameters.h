@@ -5,18 +5,24 @@
 #include <string_view>
 
 #include "ridefit/model/quarter_car.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/model/strut_test.h"
+#include "ridefit/model/strut_test_parameter_table.h"
 
 namespace ridefit::fitting {
 
-// The parameters of a strut test by name (the YAML keys), with the physical bounds a fit uses
-// unless told otherwise: wide enough for any passenger-car strut, tight enough to keep the
-// solver out of nonsense (a negative stiffness, a friction exponent of 100).
+// The parameters of a strut test: a row of the model's parameter tables (key, unit, what it
+// means; model/quarter_car_parameter_table.h for the damper path, model/
+// strut_test_parameter_table.h for the rig-only ones) with the bounds a fit uses unless told
+// otherwise: wide enough for any passenger-car strut, tight enough to keep the solver out of
+// nonsense (a negative stiffness, a friction exponent of 100).
 struct StrutParameterInfo {
-  std::string_view name;
+  const model::ParameterInfo* row;
   double lower;
   double upper;
   bool in_model_file;  // a quarter-car model key (the rig-only ones are not)
+
+  std::string_view name() const { return row->key; }
 };
 
 // The Stribeck pair acts only when stribeck_velocity_m_per_s > 0 (its default 0 is off and below
@@ -26,22 +32,22 @@ struct StrutParameterInfo {
 // below its bound: fitting it needs a start). The load cell's chain (gain, delay, cutoff) is
 // rig-only; a cutoff of 0 is off and below its bound likewise.
 inline constexpr std::array<StrutParameterInfo, 16> kStrutParameters{{
-    {"dahl_sigma0_N_per_m", 1e3, 1e10, true},
-    {"coulomb_force_N", 0.0, 1e4, true},
-    {"dahl_exponent", 0.2, 5.0, true},
-    {"top_mount_stiffness_N_per_m", 1e3, 1e10, true},
-    {"damping_Ns_per_m", 1.0, 1e6, true},
-    {"gas_force_N", -1e4, 1e4, false},
-    {"gas_stiffness_N_per_m", -1e6, 1e6, false},
-    {"force_offset_N", -1e4, 1e4, false},
-    {"static_friction_force_N", 0.0, 1e4, true},
-    {"stribeck_velocity_m_per_s", 1e-5, 10.0, true},
-    {"damping_per_command_Ns_per_m", -1e5, 1e6, true},
-    {"coulomb_force_per_command_N", -1e4, 1e4, true},
-    {"command_lag_s", 1e-4, 1.0, true},
-    {"force_gain", 0.5, 2.0, false},
-    {"force_delay_s", 0.0, 0.1, false},
-    {"force_sensor_cutoff_Hz", 1.0, 1e5, false},
+    {&model::quarter_car_row("dahl_sigma0_N_per_m"), 1e3, 1e10, true},
+    {&model::quarter_car_row("coulomb_force_N"), 0.0, 1e4, true},
+    {&model::quarter_car_row("dahl_exponent"), 0.2, 5.0, true},
+    {&model::quarter_car_row("top_mount_stiffness_N_per_m"), 1e3, 1e10, true},
+    {&model::quarter_car_row("damping_Ns_per_m"), 1.0, 1e6, true},
+    {&model::strut_rig_row("gas_force_N"), -1e4, 1e4, false},
+    {&model::strut_rig_row("gas_stiffness_N_per_m"), -1e6, 1e6, false},
+    {&model::strut_rig_row("force_offset_N"), -1e4, 1e4, false},
+    {&model::quarter_car_row("static_friction_force_N"), 0.0, 1e4, true},
+    {&model::quarter_car_row("stribeck_velocity_m_per_s"), 1e-5, 10.0, true},
+    {&model::quarter_car_row("damping_per_command_Ns_per_m"), -1e5, 1e6, true},
+    {&model::quarter_car_row("coulomb_force_per_command_N"), -1e4, 1e4, true},
+    {&model::quarter_car_row("command_lag_s"), 1e-4, 1.0, true},
+    {&model::strut_rig_row("force_gain"), 0.5, 2.0, false},
+    {&model::strut_rig_row("force_delay_s"), 0.0, 0.1, false},
+    {&model::strut_rig_row("force_sensor_cutoff_Hz"), 1.0, 1e5, false},
 }};
 
 // The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas

@@ -127,7 +127,7 @@ HysteresisFitResult fit_hysteresis_from_starts(
   auto clamp_free = [&](model::StrutTestParameters<double>& start) {
     for (std::size_t index : free) {
       double lo = kStrutParameters[index].lower, hi = kStrutParameters[index].upper;
-      const auto bound = options.bounds.find(std::string(kStrutParameters[index].name));
+      const auto bound = options.bounds.find(std::string(kStrutParameters[index].name()));
       if (bound != options.bounds.end()) std::tie(lo, hi) = bound->second;
       double& value = strut_parameter(start, index);
       value = std::clamp(value, lo, hi);

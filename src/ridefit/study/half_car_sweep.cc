@@ -14,6 +14,7 @@
 #include "ridefit/io/half_car_file.h"
 #include "ridefit/io/input_error.h"
 #include "ridefit/io/yaml_map.h"
+#include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/road_limits.h"
 #include "ridefit/simulate/half_car_simulation.h"
@@ -28,7 +29,17 @@ constexpr std::size_t kMaxRuns = 100000;
 SweepAxis read_axis(const io::YamlMap& entry, const std::filesystem::path& model) {
   SweepAxis axis;
   axis.keys = entry.texts("parameter");
+  // A key of the file (a typo never adds a key nothing reads) and a number of the half car's
+  // parameter table (a setting such as front.suspension is not swept).
+  model::HalfCarParameters<double> parameters{};
+  model::SemiActiveControl control;
   for (const auto& key : axis.keys) {
+    if (io::half_car_has_key(model, key) && !model::half_car_field(parameters, control, key)) {
+      throw InputError(fmt::format(
+          "{}: '{}' is a setting of model {}, not a number to vary (give a numeric key such as "
+          "front.damping_Ns_per_m; a setting is changed in the model file)",
+          entry.locate("parameter"), key, model.string()));
+    }
     if (!io::half_car_has_key(model, key)) {
       throw InputError(fmt::format(
           "{}: '{}' is not a key of model {} (give the dotted path of a numeric key, e.g. "
@@ -119,14 +130,20 @@ void check_plot(const HalfCarSweep& sweep, const io::YamlMap& plot) {
   }
 }
 
-std::vector<io::KeyOverride> overrides_of(const HalfCarSweep& sweep, const SweepPoint& point) {
-  std::vector<io::KeyOverride> overrides;
+// The study's car at one point: `base` with the point's values set in memory through the
+// parameter table (no file is read per run) and checked by its validate().
+io::HalfCarFile car_at(const io::HalfCarFile& base, const HalfCarSweep& sweep,
+                       const SweepPoint& point) {
+  io::HalfCarFile car = base;
   for (std::size_t a = 0; a < sweep.axes.size(); ++a) {
     for (const auto& key : sweep.axes[a].keys) {
-      overrides.emplace_back(key, fmt::format("{:.17g}", point.values[a]));
+      *model::half_car_field(car.parameters, car.topology.control, key)->value = point.values[a];
     }
   }
-  return overrides;
+  if (const auto error = model::validate(car.parameters, car.topology)) {
+    throw InputError(fmt::format("{}: vary: {}", sweep.study_file.string(), error->text()));
+  }
+  return car;
 }
 
 }  // namespace
@@ -278,11 +295,11 @@ std::vector<SweepRow> run_half_car_sweep(
     const std::function<void(std::size_t, std::size_t)>& progress) {
   std::vector<SweepPoint> points = expand(sweep);
   // Every model first, so a value the model rejects stops the study before it runs.
+  const io::HalfCarFile base = io::load_half_car(sweep.model_file);
   std::vector<io::HalfCarFile> models(points.size());
   parallel_for(points.size(), threads, [&](std::size_t i) {
     try {
-      models[i] = io::load_half_car(sweep.model_file, overrides_of(sweep, points[i]),
-                                    sweep.study_file.string() + ": vary");
+      models[i] = car_at(base, sweep, points[i]);
     } catch (const InputError& e) {
       throw InputError(fmt::format("run {} of {}: {}", i + 1, points.size(), e.what()));
     }

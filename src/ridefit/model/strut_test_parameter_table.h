@@ -1,0 +1,33 @@
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include "ridefit/model/parameter_info.h"
+
+namespace ridefit::model {
+
+// The rows of a strut on the test rig that a vehicle model does not have (strut_test.h): the gas
+// spring and the load cell's chain. The strut's damper-path parameters are quarter-car rows
+// (quarter_car_parameter_table.h). Not read from a model file: these come from a fit.
+inline constexpr std::array<ParameterInfo, 6> kStrutRigParameters{{
+    {"gas_force_N", "N", -1e4, 1e4, false, false,
+     "gas spring preload at zero travel (compression positive: pushes out)"},
+    {"gas_stiffness_N_per_m", "N/m", -1e6, 1e6, false, false, "the gas spring's rate"},
+    {"force_offset_N", "N", -1e4, 1e4, false, false, "load-cell offset"},
+    {"force_gain", "1", 0.0, 10.0, true, false, "load cell's measured over true force"},
+    {"force_delay_s", "s", 0.0, 1.0, false, false, "load cell's delay behind the displacement"},
+    {"force_sensor_cutoff_Hz", "Hz", 0.0, 1e5, false, false,
+     "load cell's first-order low-pass corner; 0 = none"},
+}};
+
+// The row of a rig-only key, at compile time.
+consteval const ParameterInfo& strut_rig_row(std::string_view key) {
+  for (const auto& row : kStrutRigParameters) {
+    if (row.key == key) return row;
+  }
+  throw "not a rig-only strut parameter";
+}
+
+}  // namespace ridefit::model
