@@ -7,7 +7,7 @@
 
 #include "ridefit/comfort/comfort_reaction.h"
 #include "ridefit/comfort/total_vibration_value.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::comfort {
 namespace {

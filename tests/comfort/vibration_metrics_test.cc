@@ -11,7 +11,7 @@
 
 #include "ridefit/comfort/additional_methods_rule.h"
 #include "ridefit/comfort/weighting_filter.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::comfort {
 namespace {

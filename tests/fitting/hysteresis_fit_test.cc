@@ -10,7 +10,7 @@
 
 #include <memory>
 #include "ridefit/fitting/friction_compression.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/road/measured_road.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"

@@ -7,7 +7,7 @@
 
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {

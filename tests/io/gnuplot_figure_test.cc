@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::io {
 namespace {

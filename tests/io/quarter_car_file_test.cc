@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "support/passat.h"
 
 namespace ridefit::io {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/model/half_car.h"
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/simulate/half_car_state_space.h"

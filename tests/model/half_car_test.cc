@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/road_input.h"
 #include "support/input_error_message.h"
 #include "support/passat.h"

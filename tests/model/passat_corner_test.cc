@@ -2,7 +2,7 @@
 // Sections 3.2 and 4.2.2).
 #include <gtest/gtest.h>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/simulate/quarter_car_modes.h"
 #include "support/passat.h"
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/optimisation/tuning_study.h"
 #include "support/passat.h"
 #include "support/temp_dir.h"

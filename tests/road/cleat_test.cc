@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "support/input_error_message.h"
 
 namespace ridefit::road {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/log_sweep.h"
 #include "ridefit/road/measured_road.h"
 #include "ridefit/road/spatial_profile_road.h"

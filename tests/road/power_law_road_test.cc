@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/iso8608.h"
 #include "support/input_error_message.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "support/input_error_message.h"
 
 namespace ridefit::road {

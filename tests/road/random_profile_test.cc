@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/road/power_law_road.h"
 

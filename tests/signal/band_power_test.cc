@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::signal {
 namespace {

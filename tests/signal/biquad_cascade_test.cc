@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::signal {
 namespace {

@@ -12,7 +12,7 @@
 #include <unsupported/Eigen/FFT>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/biquad_cascade.h"
 #include "ridefit/signal/welch_psd.h"
 #include "support/hidden_effect_record.h"

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/psd_average.h"
 #include "ridefit/signal/psd_smoothing.h"
 #include "ridefit/signal/welch_psd.h"

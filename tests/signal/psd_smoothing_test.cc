@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/welch_psd.h"
 #include "support/white_noise.h"
 

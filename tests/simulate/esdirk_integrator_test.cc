@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"

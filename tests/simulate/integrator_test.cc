@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
 #include "support/passat.h"
 #include "support/sine_road.h"

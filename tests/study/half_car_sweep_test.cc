@@ -5,13 +5,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
-#include <stdexcept>
 #include <string>
 
-#include "ridefit/study/parallel_for.h"
 #include "support/input_error_message.h"
 #include "support/passat.h"
 
@@ -140,26 +137,6 @@ TEST_F(HalfCarSweepTest, VaryingTheDamperSplitRunsInTheTimeDomain) {
   for (const auto& row : rows) EXPECT_FALSE(row.frequency_domain);
   EXPECT_EQ(rows[1].point.values[0], 0.5);
   EXPECT_NE(rows[1].metrics.front_travel_rms_m, rows[0].metrics.front_travel_rms_m);
-}
-
-TEST(ParallelFor, RunsEveryIndexOnceAndRethrowsTheFirstFailure) {
-  for (unsigned threads : {1u, 2u}) {
-    std::vector<int> hits(100, 0);
-    std::atomic<int> calls{0};
-    parallel_for(
-        hits.size(), threads, [&](std::size_t i) { ++hits[i]; }, [&](std::size_t) { ++calls; });
-    for (int h : hits) EXPECT_EQ(h, 1);
-    EXPECT_EQ(calls.load(), 100);
-    // The lowest failing index is reported, whatever the interleaving.
-    try {
-      parallel_for(50, threads, [](std::size_t i) {
-        if (i == 7 || i == 3 || i == 40) throw std::runtime_error(std::to_string(i));
-      });
-      ADD_FAILURE() << "no exception";
-    } catch (const std::runtime_error& e) {
-      EXPECT_STREQ(e.what(), "3");
-    }
-  }
 }
 
 TEST(SplitUnitSuffix, NamesAndUnits) {

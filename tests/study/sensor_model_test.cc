@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/statistics.h"
 
 namespace ridefit::study {

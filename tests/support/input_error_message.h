@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::testing {
 

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::cli {
 

@@ -7,7 +7,7 @@
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/simulate/half_car_simulation.h"

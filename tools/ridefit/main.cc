@@ -8,7 +8,7 @@
 #include <iostream>
 #include <new>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/temporary_files.h"
 #include "subcommands.h"
 

@@ -11,7 +11,7 @@
 #include "command_options.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"

@@ -12,7 +12,7 @@
 #include "ridefit/fitting/fit_adequacy.h"
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/signal_presence.h"
 
 namespace ridefit::fitting {

@@ -16,7 +16,7 @@
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"

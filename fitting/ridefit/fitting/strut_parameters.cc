@@ -2,7 +2,7 @@
 
 #include <fmt/core.h>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting {
 

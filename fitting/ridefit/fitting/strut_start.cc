@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting {
 

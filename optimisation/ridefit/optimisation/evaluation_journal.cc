@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
 
 namespace ridefit::optimisation {

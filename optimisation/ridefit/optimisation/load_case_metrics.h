@@ -8,16 +8,13 @@
 #include "ridefit/optimisation/tuning_study.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/road_input.h"
+#include "ridefit/study/load_case_evaluation.h"
 
 namespace ridefit::optimisation {
 
-// The road of one load case, made once per study and shared by every evaluation: the same
-// realisation of a random road every time (common random numbers), so that the objective is a
-// smooth function of the design and differences between designs are not road noise.
-struct LoadCaseRoad {
-  std::optional<road::RoadSpectrum> spectrum;  // random roads (iso8608, power_law)
-  std::shared_ptr<const road::RoadInput> input;
-};
+// The road of one load case (study/load_case_evaluation.h), made once per study and shared by
+// every evaluation.
+using study::LoadCaseRoad;
 
 // Loads the case's road; InputError naming the study file and the case.
 LoadCaseRoad prepare_load_case_road(const TuningStudy& study, std::size_t load_case);

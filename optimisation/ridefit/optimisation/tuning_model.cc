@@ -5,7 +5,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 

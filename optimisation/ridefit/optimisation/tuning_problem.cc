@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
-#include "ridefit/study/parallel_for.h"
+#include "ridefit/common/errors.h"
+#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::optimisation {
 
@@ -20,7 +20,7 @@ TuningProblem::TuningProblem(TuningStudy study, EvaluationJournal* journal)
       base_(load_base_model(study_, fmt::format("{}: set", study_.study_file.string()))),
       journal_(journal) {
   roads_.resize(study_.load_cases.size());
-  study::parallel_for(roads_.size(), study_.evaluation.threads,
+  common::parallel_for(roads_.size(), study_.evaluation.threads,
                       [&](std::size_t c) { roads_[c] = prepare_load_case_road(study_, c); });
 }
 
@@ -94,7 +94,7 @@ Evaluation TuningProblem::evaluate(FrictionVariant variant, Accuracy accuracy,
   std::vector<std::vector<double>> values(cases);
   std::vector<bool> frequency(cases);
   std::vector<LoadCaseMetrics> metrics(cases);
-  study::parallel_for(cases, study_.evaluation.threads, [&](std::size_t c) {
+  common::parallel_for(cases, study_.evaluation.threads, [&](std::size_t c) {
     std::string origin =
         fmt::format("{}: load case '{}' at", study_.study_file.string(), study_.load_cases[c].name);
     for (std::size_t v = 0; v < x.size(); ++v) {

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "ridefit/study/load_case_evaluation.h"
+
 namespace ridefit::optimisation {
 
 // A damper-tuning study, read from YAML (datasets/studies/passat_damper_tuning.yaml and
@@ -66,7 +68,8 @@ namespace ridefit::optimisation {
 enum class ModelKind { kQuarterCar, kHalfCar };
 enum class Aggregate { kWeightedMean, kWorstCase };
 enum class Algorithm { kCobyla, kBobyqa, kIsres, kDirectL, kMlsl };
-enum class EvaluationMethod { kAuto, kFrequency, kTime };
+// The one choice between the frequency domain and simulation (study/load_case_evaluation.h).
+using study::EvaluationMethod;
 
 struct DesignVariable {
   std::string name;

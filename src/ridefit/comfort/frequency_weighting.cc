@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::comfort {
 namespace {

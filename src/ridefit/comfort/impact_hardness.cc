@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/sample_check.h"
 #include "ridefit/signal/statistics.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string_view>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/sample_check.h"
 #include "ridefit/signal/statistics.h"
 

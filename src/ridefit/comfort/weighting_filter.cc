@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/sample_check.h"
 
 namespace ridefit::comfort {

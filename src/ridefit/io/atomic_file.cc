@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
 #include "ridefit/io/temporary_files.h"
 

@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "ridefit/io/atomic_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
 
 namespace ridefit::io {

@@ -16,7 +16,7 @@
 #include <stdexcept>
 
 #include "ridefit/io/atomic_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/temporary_files.h"
 
 namespace ridefit::io {

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/model/half_car_parameter_table.h"

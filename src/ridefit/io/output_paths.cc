@@ -9,7 +9,7 @@
 
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
 #include "ridefit/io/temporary_files.h"
 

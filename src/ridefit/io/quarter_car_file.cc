@@ -2,7 +2,7 @@
 
 #include <fmt/core.h>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 

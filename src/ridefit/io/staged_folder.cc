@@ -11,7 +11,7 @@
 #include <set>
 
 #include "ridefit/io/atomic_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/temporary_files.h"
 

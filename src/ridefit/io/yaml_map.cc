@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
 
 namespace ridefit::io {

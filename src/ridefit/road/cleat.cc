@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {

@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/road/cleat.h"
 #include "ridefit/road/iso8608.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {

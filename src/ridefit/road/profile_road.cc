@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ridefit/io/csv_table.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/resample.h"
 #include "ridefit/road/road_limits.h"
 

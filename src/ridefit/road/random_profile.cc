@@ -11,7 +11,7 @@
 #include <numbers>
 #include <random>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/road/road_limits.h"
 
 namespace ridefit::road {

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <numbers>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/sample_check.h"
 
 namespace ridefit::signal {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::signal {
 namespace {

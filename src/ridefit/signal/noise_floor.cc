@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/welch_psd.h"
 
 namespace ridefit::signal {

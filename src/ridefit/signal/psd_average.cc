@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/spectrum_check.h"
 
 namespace ridefit::signal {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/equivalent_dof.h"
 #include "ridefit/signal/hann_window.h"
 #include "ridefit/signal/spectrum_check.h"

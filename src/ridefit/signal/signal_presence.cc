@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::signal {
 

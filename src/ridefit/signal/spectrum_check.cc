@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::signal {
 

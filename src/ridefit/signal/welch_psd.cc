@@ -7,7 +7,7 @@
 #include <cmath>
 #include <complex>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/equivalent_dof.h"
 #include "ridefit/signal/hann_window.h"
 

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::simulate {
 namespace {

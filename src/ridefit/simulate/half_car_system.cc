@@ -9,7 +9,7 @@
 
 #include "ridefit/simulate/autodiff_jacobian.h"
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::simulate {
 namespace {

@@ -15,7 +15,7 @@
 #include <memory>
 #include <string>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/simulate/esdirk_integrator.h"
 
 namespace ridefit::simulate {

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <set>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::simulate {
 namespace {

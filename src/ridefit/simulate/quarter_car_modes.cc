@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/simulate/quarter_car_system.h"
 
 namespace ridefit::simulate {

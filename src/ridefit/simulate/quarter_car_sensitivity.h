@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/road/road_input.h"
 #include "ridefit/simulate/esdirk_integrator.h"

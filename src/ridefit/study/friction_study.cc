@@ -9,7 +9,7 @@
 #include "ridefit/signal/spectrum_peak.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"
-#include "ridefit/study/parallel_for.h"
+#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::study {
 namespace {
@@ -68,7 +68,7 @@ FrictionStudyResult run_friction_study(const model::QuarterCarParameters<double>
   FrictionStudyResult result;
   result.cases.resize(count);
   std::vector<std::vector<double>> frequencies(count);
-  parallel_for(
+  common::parallel_for(
       count, options.threads,
       [&](std::size_t i) {
         result.cases[i] =

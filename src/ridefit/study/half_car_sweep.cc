@@ -12,14 +12,14 @@
 
 #include "ridefit/io/closest_names.h"
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/road_limits.h"
 #include "ridefit/simulate/half_car_simulation.h"
-#include "ridefit/study/half_car_spectral_metrics.h"
-#include "ridefit/study/parallel_for.h"
+#include "ridefit/study/load_case_evaluation.h"
+#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::study {
 namespace {
@@ -209,9 +209,9 @@ HalfCarSweep load_half_car_sweep(const std::filesystem::path& study_file) {
   }
   if (file.has("method")) {
     const std::string method = file.choice("method", {"auto", "frequency", "time"});
-    sweep.method = method == "frequency" ? SweepMethod::kFrequency
-                   : method == "time"    ? SweepMethod::kTime
-                                         : SweepMethod::kAuto;
+    sweep.method = method == "frequency" ? EvaluationMethod::kFrequency
+                   : method == "time"    ? EvaluationMethod::kTime
+                                         : EvaluationMethod::kAuto;
   }
   if (file.has("time")) {
     const io::YamlMap time = file.map("time");
@@ -297,7 +297,7 @@ std::vector<SweepRow> run_half_car_sweep(
   // Every model first, so a value the model rejects stops the study before it runs.
   const io::HalfCarFile base = io::load_half_car(sweep.model_file);
   std::vector<io::HalfCarFile> models(points.size());
-  parallel_for(points.size(), threads, [&](std::size_t i) {
+  common::parallel_for(points.size(), threads, [&](std::size_t i) {
     try {
       models[i] = car_at(base, sweep, points[i]);
     } catch (const InputError& e) {
@@ -312,9 +312,8 @@ std::vector<SweepRow> run_half_car_sweep(
     return m.make_model().is_linear();
   });
   struct RoadCase {
-    std::optional<road::RoadSpectrum> spectrum;
-    std::shared_ptr<road::RoadInput> input;
-    bool frequency = false;
+    LoadCaseRoad road;
+    LoadCaseSettings settings;  // method kFrequency or kTime, decided once for every run
   };
   std::map<std::pair<std::size_t, double>, RoadCase> roads;
   for (auto& point : points) {
@@ -324,18 +323,18 @@ std::vector<SweepRow> run_half_car_sweep(
     const std::optional<double> speed =
         point.speed_m_per_s > 0.0 ? std::optional(point.speed_m_per_s) : std::nullopt;
     RoadCase c;
-    c.spectrum = road::load_road_spectrum(path, speed);
-    c.frequency = sweep.method == SweepMethod::kFrequency ||
-                  (sweep.method == SweepMethod::kAuto && linear && c.spectrum);
-    if (c.frequency && (!c.spectrum || !linear)) {
-      throw InputError(fmt::format(
-          "{}: method frequency needs a linear car (no Dahl friction, passive symmetric "
-          "damping) and random roads (iso8608, power_law); road '{}' or the model is not",
-          sweep.study_file.string(), sweep.roads[point.road].first));
-    }
-    if (!c.frequency) {
-      c.input = speed ? road::load_excitation(path, *speed) : road::load_excitation(path);
-      const double used_s = sweep.duration_s > 0.0 ? sweep.duration_s : c.input->duration_s();
+    c.road.spectrum = road::load_road_spectrum(path, speed);
+    c.settings.method = sweep.method;
+    c.settings.output_rate_Hz = sweep.output_rate_Hz;
+    c.settings.settle_s = sweep.settle_s;
+    c.settings.duration_s = sweep.duration_s;
+    const bool frequency = in_frequency_domain(
+        linear, c.road, c.settings,
+        fmt::format("{}: road '{}'", sweep.study_file.string(), sweep.roads[point.road].first));
+    c.settings.method = frequency ? EvaluationMethod::kFrequency : EvaluationMethod::kTime;
+    if (!frequency) {
+      c.road.input = speed ? road::load_excitation(path, *speed) : road::load_excitation(path);
+      const double used_s = sweep.duration_s > 0.0 ? sweep.duration_s : c.road.input->duration_s();
       if (sweep.settle_s >= used_s) {
         throw InputError(fmt::format(
             "{}: time.settle_s is {:g} s, not below the {:g} s of road '{}'{}: nothing would be "
@@ -349,8 +348,9 @@ std::vector<SweepRow> run_half_car_sweep(
   for (auto& point : points) {
     if (point.speed_m_per_s > 0.0) continue;
     const RoadCase& c = roads.at({point.road, 0.0});
-    const std::optional<double> own =
-        c.spectrum ? std::optional(c.spectrum->speed_m_per_s) : c.input->speed_m_per_s();
+    const std::optional<double> own = c.road.spectrum
+                                          ? std::optional(c.road.spectrum->speed_m_per_s)
+                                          : c.road.input->speed_m_per_s();
     if (!own) {
       throw InputError(fmt::format("{}: road '{}' is not driven at a speed; give speeds_km_per_h",
                                    sweep.study_file.string(), sweep.roads[point.road].first));
@@ -358,26 +358,20 @@ std::vector<SweepRow> run_half_car_sweep(
   }
   std::vector<SweepRow> rows(points.size());
   std::size_t done = 0;
-  parallel_for(
+  common::parallel_for(
       points.size(), threads,
       [&](std::size_t i) {
         const SweepPoint& point = points[i];
         const RoadCase& c = roads.at({point.road, point.speed_m_per_s});
-        const model::HalfCar car = models[i].make_model();
+        const auto evaluation = evaluate_on_load_case(models[i].make_model(), c.road, c.settings,
+                                                      sweep.study_file.string());
         SweepRow row;
         row.point = point;
-        row.frequency_domain = c.frequency;
-        if (c.frequency) {
-          row.metrics = half_car_spectral_metrics(car, *c.spectrum);
-          row.point.speed_m_per_s = c.spectrum->speed_m_per_s;
-        } else {
-          simulate::HalfCarSimulationOptions options;
-          options.output_rate_Hz = sweep.output_rate_Hz;
-          options.duration_s = sweep.duration_s;
-          row.metrics = half_car_metrics(simulate::simulate(car, *c.input, options),
-                                         car.parameters(), sweep.settle_s);
-          row.point.speed_m_per_s = c.input->speed_m_per_s().value_or(0.0);
-        }
+        row.frequency_domain = evaluation.frequency_domain;
+        row.metrics = evaluation.metrics;
+        row.point.speed_m_per_s = evaluation.frequency_domain
+                                      ? c.road.spectrum->speed_m_per_s
+                                      : c.road.input->speed_m_per_s().value_or(0.0);
         rows[i] = std::move(row);
       },
       [&](std::size_t) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ridefit/study/half_car_metrics.h"
+#include "ridefit/study/load_case_evaluation.h"
 
 namespace ridefit::study {
 
@@ -41,8 +42,6 @@ struct SweepAxis {
   std::vector<double> values;
 };
 
-enum class SweepMethod { kAuto, kFrequency, kTime };
-
 struct SweepPlot {
   std::string x;               // speed_km_per_h or an axis name
   std::string series;          // road, speed_km_per_h, an axis name, or empty
@@ -56,7 +55,7 @@ struct HalfCarSweep {
   std::vector<double> speeds_m_per_s;  // empty: each road's own speed
   std::vector<SweepAxis> axes;
   bool zip = false;
-  SweepMethod method = SweepMethod::kAuto;
+  EvaluationMethod method = EvaluationMethod::kAuto;
   double output_rate_Hz = 1000.0;
   double settle_s = 2.0;
   double duration_s = 0.0;  // 0: the road's own

@@ -7,7 +7,7 @@
 
 #include "ridefit/comfort/tyre_load_metrics.h"
 #include "ridefit/comfort/weighting_filter.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/statistics.h"
 
 namespace ridefit::study {

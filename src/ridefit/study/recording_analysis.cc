@@ -7,7 +7,7 @@
 #include <set>
 
 #include "ridefit/comfort/weighting_filter.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/correlation.h"
 #include "ridefit/signal/psd_average.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/biquad_cascade.h"
 #include "ridefit/signal/statistics.h"
 

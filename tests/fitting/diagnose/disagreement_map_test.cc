@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/signal/biquad_cascade.h"
 #include "support/white_noise.h"
 

@@ -16,7 +16,7 @@
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/psd_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <random>
 
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {

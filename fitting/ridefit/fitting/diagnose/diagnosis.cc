@@ -7,8 +7,8 @@
 #include <map>
 #include <mutex>
 
-#include "ridefit/io/input_error.h"
-#include "ridefit/study/parallel_for.h"
+#include "ridefit/common/errors.h"
+#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {

@@ -7,8 +7,8 @@
 #include <mutex>
 #include <optional>
 
-#include "ridefit/io/input_error.h"
-#include "ridefit/study/parallel_for.h"
+#include "ridefit/common/errors.h"
+#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -152,7 +152,7 @@ Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string
     std::vector<std::vector<std::string>> trial_free(trials.size());
     std::vector<ParameterBounds> trial_bounds(trials.size(), bounds);
     std::mutex lock;
-    study::parallel_for(
+    common::parallel_for(
         to_try.size(), options.threads,
         [&](std::size_t i) {
           const auto& [index, change] = to_try[i];

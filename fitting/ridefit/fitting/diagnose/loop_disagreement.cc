@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "ridefit/fitting/diagnose/residual_statistics.h"
-#include "ridefit/io/input_error.h"
+#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {

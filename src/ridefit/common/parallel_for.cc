@@ -1,4 +1,4 @@
-#include "ridefit/study/parallel_for.h"
+#include "ridefit/common/parallel_for.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-namespace ridefit::study {
+namespace ridefit::common {
 
 void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body,
                   const std::function<void(std::size_t)>& done) {
@@ -44,4 +44,4 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
   if (failure) std::rethrow_exception(failure);
 }
 
-}  // namespace ridefit::study
+}  // namespace ridefit::common

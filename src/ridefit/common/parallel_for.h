@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <functional>
 
-namespace ridefit::study {
+namespace ridefit::common {
 
 // Runs body(i) for i = 0 … count−1 on `threads` threads (0 = every core), each thread taking the
 // next index from a shared counter, so uneven runs balance themselves. `done` (may be empty) is
@@ -13,4 +13,4 @@ namespace ridefit::study {
 void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body,
                   const std::function<void(std::size_t index)>& done = {});
 
-}  // namespace ridefit::study
+}  // namespace ridefit::common
