@@ -9,8 +9,8 @@
 #include <random>
 
 #include <memory>
-#include "ridefit/fitting/friction_compression.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/friction_compression.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/common/errors.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {

@@ -9,10 +9,10 @@
 #include <string>
 #include <system_error>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/optimisation/evaluation_journal.h"

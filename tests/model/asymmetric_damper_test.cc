@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ridefit/io/half_car_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/half_car_file.h"
 #include "ridefit/model/half_car.h"
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/simulate/half_car_state_space.h"

@@ -10,8 +10,8 @@
 #include <numbers>
 #include <vector>
 
-#include "ridefit/io/half_car_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/half_car_file.h"
 #include "ridefit/road/road_input.h"
 #include "support/input_error_message.h"
 #include "support/passat.h"

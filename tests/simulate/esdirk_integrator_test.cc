@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "ridefit/io/half_car_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/half_car_file.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"

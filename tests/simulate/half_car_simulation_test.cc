@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "ridefit/io/half_car_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/half_car_file.h"
 #include "ridefit/road/cleat.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/signal/statistics.h"

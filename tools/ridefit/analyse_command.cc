@@ -9,10 +9,10 @@
 #include <memory>
 
 #include "command_options.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/study/recording_analysis.h"

@@ -18,10 +18,10 @@
 
 #include "command_options.h"
 #include "diagnose_common.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/diagnosis.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"

@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "diagnose_common.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/loop_diagnosis.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"

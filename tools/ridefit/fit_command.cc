@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "command_options.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_adequacy.h"
 #include "ridefit/fitting/friction_compression.h"
 #include "ridefit/fitting/hysteresis_fit.h"
@@ -21,7 +22,6 @@
 #include "ridefit/fitting/strut_start.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/signal/hysteresis_friction.h"
@@ -163,7 +163,7 @@ void run(const FitHysteresisFlags& flags) {
           name, bound.first, bound.second, name, free));
     }
   }
-  options.loss = flags.loss;
+  options.loss = fitting::parse_robust_loss(flags.loss);
   options.loss_scale_N = flags.loss_scale_N;
   options.solver.relative_tolerance = flags.relative_tolerance;
   options.solver.interpolation = flags.interpolation == "linear"
@@ -359,7 +359,7 @@ void run_psd(const FitPsdFlags& flags) {
   options.segment_s = flags.segment_s;
   options.starts = flags.starts;
   options.max_iterations = flags.max_iterations;
-  options.loss = flags.loss;
+  options.loss = fitting::parse_robust_loss(flags.loss);
   options.relative_tolerance = flags.relative_tolerance;
   options.body_noise_psd = noise_psd_of(flags.body_noise_psd);
   options.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);

@@ -13,9 +13,9 @@
 #include <set>
 
 #include "command_options.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/staged_folder.h"

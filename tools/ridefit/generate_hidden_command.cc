@@ -44,10 +44,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include "command_options.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/effect.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/io/atomic_file.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/staged_folder.h"

@@ -19,8 +19,8 @@
 #include <random>
 
 #include "command_options.h"
-#include "ridefit/io/atomic_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/staged_folder.h"
 #include "ridefit/model/quarter_car.h"

@@ -4,10 +4,10 @@
 #include <chrono>
 #include <iostream>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/simulate/half_car_simulation.h"

@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/optimisation/evaluation_journal.h"

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "command_options.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"

@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "command_options.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/study/half_car_sweep.h"
 #include "subcommands.h"

@@ -9,10 +9,10 @@
 #include <memory>
 #include <set>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_adequacy.h"
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting {
 namespace {
@@ -146,47 +146,22 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
                                    const model::StrutTestParameters<double>& start,
                                    const HysteresisFitOptions& options) {
   if (records.empty()) throw InputError("fit: no data file given");
-  if (options.free.empty()) {
-    throw InputError("--free: name at least one parameter to fit, e.g. coulomb_force_N");
-  }
-  std::set<std::size_t> free;
-  for (const auto& name : options.free) {
-    if (!free.insert(strut_parameter_index(name)).second) {
-      throw InputError(fmt::format("--free: '{}' is given twice", name));
-    }
-  }
+  options.validate();
   const bool any_command = std::any_of(
       records.begin(), records.end(), [](const HysteresisRecord& r) { return !r.command.empty(); });
   for (const auto& name : options.free) {
     if (!any_command && (name == "damping_per_command_Ns_per_m" ||
                          name == "coulomb_force_per_command_N" || name == "command_lag_s")) {
       throw InputError(fmt::format(
-          "--free {}: no record has a command column (current[A] or voltage[V]); a controlled "
-          "damper's law needs the command the damper was given",
+          "free parameter {}: no record has a command column (current[A] or voltage[V]); a "
+          "controlled damper's law needs the command the damper was given",
           name));
     }
   }
-  std::set<std::size_t> per_file;
-  for (const auto& name : options.per_file) {
-    const std::size_t index = strut_parameter_index(name);
-    if (!free.count(index)) {
-      throw InputError(fmt::format("--per-file: '{}' is not among the free parameters", name));
-    }
-    per_file.insert(index);
-  }
-  std::array<std::pair<double, double>, kStrutParameters.size()> bounds;
-  for (std::size_t i = 0; i < kStrutParameters.size(); ++i) {
-    bounds[i] = {kStrutParameters[i].lower, kStrutParameters[i].upper};
-  }
-  for (const auto& [name, bound] : options.bounds) {
-    const std::size_t index = strut_parameter_index(name);
-    if (!(bound.first < bound.second) || !std::isfinite(bound.first) ||
-        !std::isfinite(bound.second)) {
-      throw InputError(fmt::format("bounds of {}: lower {} must be below upper {}, both finite",
-                                   name, bound.first, bound.second));
-    }
-    bounds[index] = bound;
-  }
+  std::set<std::size_t> free, per_file;
+  for (const auto& name : options.free) free.insert(strut_parameter_index(name));
+  for (const auto& name : options.per_file) per_file.insert(strut_parameter_index(name));
+  const auto bounds = options.resolved_bounds();
   model::StrutTestParameters<double> base = start;
   for (std::size_t index : free) {
     const double v = strut_parameter(base, index);
@@ -235,10 +210,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
       }
       ceres::CostFunction* cost = make_cost(functor, static_cast<int>(used.size()),
                                             static_cast<int>(records[r].force_N.size()));
-      ceres::LossFunction* loss = nullptr;
-      if (options.loss == "huber") loss = new ceres::HuberLoss(options.loss_scale_N);
-      if (options.loss == "cauchy") loss = new ceres::CauchyLoss(options.loss_scale_N);
-      problem.AddResidualBlock(cost, loss, used);
+      problem.AddResidualBlock(cost, make_loss_function(options.loss, options.loss_scale_N), used);
     }
   };
   ceres::Problem problem;

@@ -9,24 +9,12 @@
 #include <utility>
 #include <vector>
 
+#include "ridefit/fitting/hysteresis_fit_options.h"
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/model/strut_test.h"
 #include "ridefit/simulate/strut_test_response.h"
 
 namespace ridefit::fitting {
-
-struct HysteresisFitOptions {
-  std::vector<std::string> free;      // parameters to fit (names of kStrutParameters)
-  std::vector<std::string> per_file;  // of those, the ones each file gets its own value of
-  std::map<std::string, std::pair<double, double>> bounds;  // overrides of the defaults
-  std::string loss = "none";  // none | huber | cauchy (robust against outlying samples)
-  double loss_scale_N = 5.0;  // where the robust loss starts to discount a residual
-  int max_iterations = 100;
-  simulate::StrutTestSolverOptions solver;
-  // Above this NRMSE (%, the residual's RMS over the measured force's spread about its mean) the
-  // fitted model is flagged as not explaining the data.
-  double max_nrmse_percent = 10.0;
-};
 
 struct FittedParameter {
   std::string name;

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/signal/signal_presence.h"
 
 namespace ridefit::fitting {

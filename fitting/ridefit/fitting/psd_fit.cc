@@ -13,10 +13,10 @@
 #include <tuple>
 #include <unsupported/Eigen/FFT>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
@@ -30,7 +30,7 @@
 namespace ridefit::fitting {
 namespace {
 
-constexpr int kMaxFree = 6;
+constexpr int kMaxFree = static_cast<int>(PsdFitOptions::kMaxFree);
 
 template <typename T>
 T& field(model::QuarterCarParameters<T>& p, std::size_t index) {
@@ -343,9 +343,7 @@ struct PsdSetup {
 
 PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
                  const PsdFitOptions& options, bool fitting = true) {
-  if (fitting && (options.free.empty() || options.free.size() > kMaxFree)) {
-    throw InputError(fmt::format("--free: name 1 to {} parameters to fit", kMaxFree));
-  }
+  options.validate(fitting);
   std::vector<std::size_t> fields;
   if (fitting) {
     for (const auto& name : options.free) fields.push_back(parameter_index(name));
@@ -489,10 +487,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
     ceres::CostFunction* cost = new_psd_cost(m, car, setup, solver_options(options));
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
-    ceres::LossFunction* loss = nullptr;
-    if (options.loss == "huber") loss = new ceres::HuberLoss(options.loss_scale);
-    if (options.loss == "cauchy") loss = new ceres::CauchyLoss(options.loss_scale);
-    problem.AddResidualBlock(cost, loss, blocks);
+    problem.AddResidualBlock(cost, make_loss_function(options.loss, options.loss_scale), blocks);
     for (std::size_t i = 0; i < fields.size(); ++i) {
       problem.SetParameterLowerBound(&x[i], 0, bounds[i].first / units[i]);
       problem.SetParameterUpperBound(&x[i], 0, bounds[i].second / units[i]);

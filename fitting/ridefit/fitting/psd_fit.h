@@ -16,6 +16,8 @@
 #include "ridefit/road/road_input.h"
 #include "ridefit/simulate/esdirk_integrator.h"
 
+#include "ridefit/fitting/psd_fit_options.h"
+
 namespace ridefit::fitting {
 
 // A vehicle measurement for the PSD fit: the road under the wheel and the measured body and/or
@@ -36,31 +38,6 @@ struct PsdMeasurement {
 // naming the file and what is missing.
 PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
                                     const std::filesystem::path& excitation_file = {});
-
-struct PsdFitOptions {
-  std::vector<std::string> free;                            // quarter-car keys, at most 6
-  std::map<std::string, std::pair<double, double>> bounds;  // default: a decade each way
-  double band_low_Hz = 0.5;
-  double band_high_Hz = 30.0;
-  double segment_s = 10.0;  // Welch, Hann, 50 % overlap, the same on both sides
-  // The simulation's relative tolerance (simulate::AccelerationSolverOptions): 1e-4 keeps the
-  // accelerations' RMS within 0.02 % of CVODE at 1e-10, far inside a Welch bin's scatter.
-  double relative_tolerance = 1e-4;
-  // Tests only: run every evaluation on these steps (simulate::quarter_car_steps at the point
-  // checked), so central differences see the same discrete map the Jacobian belongs to.
-  const simulate::EsdirkStepHistory* frozen_steps = nullptr;
-  int max_iterations = 50;
-  int starts = 1;  // multi-start: also start at these many spread points within the bounds
-  std::string loss = "none";  // none | huber | cauchy, on the log-PSD residuals
-  double loss_scale = 0.5;    // in natural-log units: a factor e^0.5 = 1.65 in PSD
-  // The white sensor-noise floor of each channel, the one-sided PSD level N [(m/s²)²/Hz] the
-  // accelerometer adds: the fit compares ln(P_sim + N) with ln(P_meas), so bins where the noise
-  // dominates the measurement no longer pull the parameters. Empty = estimated from each
-  // measured record (signal/noise_floor.h: the constant of a power law plus a constant fitted
-  // to the measured PSD above the band); 0 = no floor (the plain log-PSD residual).
-  std::optional<double> body_noise_psd;
-  std::optional<double> wheel_noise_psd;
-};
 
 // The noise floors a fit or a comparison on `measurement` uses [(m/s²)²/Hz]: the options' values
 // where given, else estimated from the measured channel above options.band_high_Hz; 0 for a

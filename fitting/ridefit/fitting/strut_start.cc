@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/strut_parameters.h"
 
 namespace ridefit::fitting {
 

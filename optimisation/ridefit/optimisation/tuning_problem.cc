@@ -21,7 +21,7 @@ TuningProblem::TuningProblem(TuningStudy study, EvaluationJournal* journal)
       journal_(journal) {
   roads_.resize(study_.load_cases.size());
   common::parallel_for(roads_.size(), study_.evaluation.threads,
-                      [&](std::size_t c) { roads_[c] = prepare_load_case_road(study_, c); });
+                       [&](std::size_t c) { roads_[c] = prepare_load_case_road(study_, c); });
 }
 
 std::size_t TuningProblem::metric_index(const std::string& name) const {

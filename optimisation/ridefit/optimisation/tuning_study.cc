@@ -8,9 +8,9 @@
 #include <set>
 
 #include "ridefit/comfort/weighting_filter.h"
+#include "ridefit/common/errors.h"
 #include "ridefit/io/closest_names.h"
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/path_type.h"
 #include "ridefit/io/quarter_car_file.h"

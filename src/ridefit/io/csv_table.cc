@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "ridefit/io/atomic_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/path_type.h"
 
 namespace ridefit::io {

@@ -15,8 +15,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "ridefit/io/atomic_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/temporary_files.h"
 
 namespace ridefit::io {

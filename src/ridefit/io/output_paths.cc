@@ -7,9 +7,9 @@
 #include <fstream>
 #include <set>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
 #include "ridefit/io/temporary_files.h"
 

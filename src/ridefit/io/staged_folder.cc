@@ -10,8 +10,8 @@
 #include <cstring>
 #include <set>
 
-#include "ridefit/io/atomic_file.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/temporary_files.h"
 

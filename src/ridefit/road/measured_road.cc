@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/road/resample.h"
 #include "ridefit/road/road_limits.h"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "ridefit/io/csv_table.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/csv_table.h"
 #include "ridefit/road/resample.h"
 #include "ridefit/road/road_limits.h"
 

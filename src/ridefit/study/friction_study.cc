@@ -5,11 +5,11 @@
 
 #include "ridefit/comfort/vibration_metrics.h"
 #include "ridefit/comfort/weighting_filter.h"
+#include "ridefit/common/parallel_for.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/spectrum_peak.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/signal/welch_psd.h"
-#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::study {
 namespace {

@@ -10,16 +10,16 @@
 #include <memory>
 #include <set>
 
+#include "ridefit/common/errors.h"
+#include "ridefit/common/parallel_for.h"
 #include "ridefit/io/closest_names.h"
 #include "ridefit/io/half_car_file.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/road_limits.h"
 #include "ridefit/simulate/half_car_simulation.h"
 #include "ridefit/study/load_case_evaluation.h"
-#include "ridefit/common/parallel_for.h"
 
 namespace ridefit::study {
 namespace {

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/psd_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/iso8608.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <span>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/pooled_bands.h"
 #include "ridefit/fitting/diagnose/residual_statistics.h"
-#include "ridefit/common/errors.h"
 #include "ridefit/signal/equivalent_dof.h"
 #include "ridefit/signal/hann_window.h"
 #include "ridefit/signal/psd_confidence.h"

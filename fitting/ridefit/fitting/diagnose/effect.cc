@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <map>
 
+#include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
-#include "ridefit/common/errors.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numeric>
 
-#include "ridefit/fitting/diagnose/residual_statistics.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/diagnose/residual_statistics.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {

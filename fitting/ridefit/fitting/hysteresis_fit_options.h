@@ -1,0 +1,38 @@
+#pragma once
+
+#include <array>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ridefit/fitting/robust_loss.h"
+#include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/simulate/strut_test_response.h"
+
+namespace ridefit::fitting {
+
+// What a hysteresis fit frees, within which bounds, and how it weighs residuals (Ceres'
+// Solver::Options style: plain fields with defaults, checked as a whole by validate()).
+struct HysteresisFitOptions {
+  std::vector<std::string> free;      // parameters to fit (names of kStrutParameters)
+  std::vector<std::string> per_file;  // of those, the ones each file gets its own value of
+  std::map<std::string, std::pair<double, double>> bounds;  // overrides of the defaults
+  RobustLoss loss = RobustLoss::kNone;                      // robust against outlying samples
+  double loss_scale_N = 5.0;  // where the robust loss starts to discount a residual
+  int max_iterations = 100;
+  simulate::StrutTestSolverOptions solver;
+  // Above this NRMSE (%, the residual's RMS over the measured force's spread about its mean) the
+  // fitted model is flagged as not explaining the data.
+  double max_nrmse_percent = 10.0;
+
+  // InputError naming the option for: no free parameter, an unknown or repeated one, a per-file
+  // parameter that is not free, bounds of an unknown parameter or with lower >= upper or not
+  // finite, a loss scale, iteration limit or NRMSE threshold that is not > 0.
+  void validate() const;
+
+  // Every strut parameter's bounds: kStrutParameters' defaults with `bounds` applied.
+  std::array<std::pair<double, double>, kStrutParameters.size()> resolved_bounds() const;
+};
+
+}  // namespace ridefit::fitting
