@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
-#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <set>
@@ -16,6 +15,7 @@
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/value_range.h"
 #include "ridefit/io/yaml_map.h"
+#include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/optimisation/tuning_model.h"
 #include "ridefit/road/excitation_file.h"
@@ -47,28 +47,37 @@ void check_metric(const io::YamlMap& map, const std::string& metric, ModelKind k
   }
 }
 
-// The model file's value of a dotted key, if it has one.
-std::optional<double> model_value(const std::filesystem::path& model, const std::string& key) {
-  YAML::Node node = YAML::LoadFile(model.string());
-  std::size_t from = 0;
-  while (true) {
-    const std::size_t dot = key.find('.', from);
-    const std::string part = key.substr(from, dot == std::string::npos ? dot : dot - from);
-    if (!node.IsMap() || !node[part]) return std::nullopt;
-    node = node[part];
-    if (dot == std::string::npos) break;
-    from = dot + 1;
+// What the study knows of its model before the design: the model with the study's `set:`
+// values (read once), and the numeric keys its file gives.
+struct StudyModel {
+  TuningModel base;
+  std::vector<std::string> file_keys;  // dotted, as io::yaml_number_keys gives them
+};
+
+// The start of a design variable without a `start:`: the model's value of `key` when its file
+// or the study's `set:` gives it, or the default of an optional key that stands alone.
+std::optional<double> model_value(const StudyModel& model, const TuningStudy& study,
+                                  const std::string& key) {
+  const bool given =
+      std::find(model.file_keys.begin(), model.file_keys.end(), key) != model.file_keys.end() ||
+      std::any_of(study.model_settings.begin(), study.model_settings.end(),
+                  [&](const auto& setting) { return setting.first == key; });
+  if (!given && !key.ends_with("compression_to_rebound_ratio")) return std::nullopt;
+  TuningModel base = model.base;
+  if (base.quarter) {
+    const auto index = model::quarter_car_parameter_index(key);
+    if (!index) return std::nullopt;
+    return model::quarter_car_parameter(base.quarter->parameters, *index);
   }
-  try {
-    return node.as<double>();
-  } catch (const YAML::Exception&) {
-    return std::nullopt;
-  }
+  const auto field = model::half_car_field(base.half->parameters, base.half->topology.control, key);
+  if (!field) return std::nullopt;
+  return *field->value;
 }
 
 // A design parameter must be a number of the model: the topology is not, and a misspelt key
 // is named as an unknown parameter with the closest names.
-void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const std::string& key) {
+void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const StudyModel& model,
+                      const std::string& key) {
   const std::string leaf = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
   if (leaf == "damper_state" || leaf == "model" || leaf == "tyre_lift_off") {
     throw InputError(fmt::format(
@@ -76,7 +85,7 @@ void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const 
         "such as damping_Ns_per_m (a setting goes under the study's model settings)",
         entry.locate("parameter"), key));
   }
-  std::vector<std::string> candidates = io::yaml_number_keys(study.model_file);
+  std::vector<std::string> candidates = model.file_keys;
   bool known = false;
   if (study.kind == ModelKind::kQuarterCar) {
     known = model::quarter_car_parameter_index(key).has_value();
@@ -92,10 +101,11 @@ void check_design_key(const io::YamlMap& entry, const TuningStudy& study, const 
   }
 }
 
-DesignVariable read_design(const io::YamlMap& entry, const TuningStudy& study) {
+DesignVariable read_design(const io::YamlMap& entry, const TuningStudy& study,
+                           const StudyModel& model) {
   DesignVariable v;
   v.keys = entry.texts("parameter");
-  for (const auto& key : v.keys) check_design_key(entry, study, key);
+  for (const auto& key : v.keys) check_design_key(entry, study, model, key);
   v.name = entry.has("name") ? entry.text("name") : v.keys.front();
   v.lower = entry.number("lower");
   v.upper = entry.number("upper");
@@ -111,12 +121,7 @@ DesignVariable read_design(const io::YamlMap& entry, const TuningStudy& study) {
   if (entry.has("start")) {
     v.start = entry.number("start");
   } else {
-    std::optional<double> value = model_value(study.model_file, v.keys.front());
-    // Optional model keys that default on their own start from that default.
-    if (!value && v.keys.front().ends_with("compression_to_rebound_ratio")) value = 1.0;
-    for (const auto& [key, text] : study.model_settings) {
-      if (key == v.keys.front()) value = std::stod(text);  // a number: the model accepted it
-    }
+    const std::optional<double> value = model_value(model, study, v.keys.front());
     if (!value) {
       throw InputError(fmt::format("{}: '{}' has no number in model {} to start from; give start",
                                    entry.locate("parameter"), v.keys.front(),
@@ -374,10 +379,10 @@ const char* to_string(Aggregate aggregate) {
   return aggregate == Aggregate::kWorstCase ? "worst_case" : "weighted_mean";
 }
 
-TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
-  const io::YamlMap file = io::YamlMap::load(study_file);
-  TuningStudy study;
-  study.study_file = study_file;
+namespace {
+
+// The model, its kind, the study's `set:` and friction: what every later section checks against.
+StudyModel read_model(const io::YamlMap& file, TuningStudy& study) {
   study.model_file = file.file("model");
   std::string kind;
   try {
@@ -389,8 +394,7 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
   study.kind = kind == "half_car" ? ModelKind::kHalfCar : ModelKind::kQuarterCar;
 
   if (file.has("set")) {
-    const YAML::Node set = YAML::LoadFile(study_file.string())["set"];
-    if (!set.IsMap()) {
+    if (!file.is_mapping("set")) {
       throw InputError(
           fmt::format("{} must be a mapping of model keys, e.g. {{front.suspension: strut}}",
                       file.locate("set")));
@@ -401,13 +405,16 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
     }
   }
   // The model as the study uses it, before the design or the cases change it.
-  const TuningModel base = build_tuning_model(study, FrictionVariant::kStudy, LoadCase{}, {},
-                                              fmt::format("{}: set", study_file.string()));
-  if (file.has("friction")) read_friction(file.map("friction"), base, study);
+  StudyModel model{load_base_model(study, fmt::format("{}: set", study.study_file.string())),
+                   io::yaml_number_keys(study.model_file)};
+  if (file.has("friction")) read_friction(file.map("friction"), model.base, study);
+  return model;
+}
 
+void read_design_section(const io::YamlMap& file, TuningStudy& study, const StudyModel& model) {
   std::set<std::string> names, keys;
   for (const auto& entry : file.maps("design")) {
-    study.design.push_back(read_design(entry, study));
+    study.design.push_back(read_design(entry, study, model));
     if (!names.insert(study.design.back().name).second) {
       throw InputError(fmt::format("{}: the name '{}' is used twice", entry.locate("parameter"),
                                    study.design.back().name));
@@ -419,17 +426,19 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
       }
     }
   }
+}
 
+void read_load_cases(const io::YamlMap& file, TuningStudy& study) {
   if (!file.has("load_cases")) {
     throw InputError(fmt::format("{} is missing; give at least one case with a road",
                                  file.locate("load_cases")));
   }
-  const YAML::Node cases = YAML::LoadFile(study_file.string())["load_cases"];
-  if (!cases.IsSequence()) {
+  const std::optional<std::size_t> length = file.list_length("load_cases");
+  if (!length) {
     throw InputError(fmt::format("{} is not a list; write each case as `- {{name: …, road: …}}`",
                                  file.locate("load_cases")));
   }
-  if (cases.size() == 0) {
+  if (*length == 0) {
     throw InputError(
         fmt::format("{} is empty; give at least one case, e.g. - {{road: ../excitations/x.yaml}}",
                     file.locate("load_cases")));
@@ -447,8 +456,10 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
                                    case_maps[i].locate("name"), study.load_cases.back().name));
     }
   }
+}
 
-  // A key set by a design variable cannot also be fixed by a case or by the friction level.
+// A key set by a design variable cannot also be fixed by a case or by the friction level.
+void check_design_not_fixed(const io::YamlMap& file, const TuningStudy& study) {
   for (const auto& v : study.design) {
     for (const auto& key : v.keys) {
       for (const auto& c : study.load_cases) {
@@ -470,7 +481,9 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
       }
     }
   }
+}
 
+void read_objective_and_constraints(const io::YamlMap& file, TuningStudy& study) {
   const io::YamlMap objective = file.map("objective");
   study.objective.metric = objective.text("metric");
   check_metric(objective, study.objective.metric, study.kind);
@@ -496,48 +509,46 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
       study.constraints.push_back(c);
     }
   }
+}
 
-  if (file.has("optimiser")) read_optimiser(file.map("optimiser"), study.optimiser);
-  if (file.has("evaluation")) read_evaluation(file.map("evaluation"), study.evaluation);
-
-  if (file.has("tradeoff")) {
-    const io::YamlMap t = file.map("tradeoff");
-    const std::string metric = t.text("metric");
-    Tradeoff tradeoff;
-    bool found = false;
-    for (std::size_t i = 0; i < study.constraints.size() && !found; ++i) {
-      if (study.constraints[i].metric == metric) {
-        tradeoff.constraint = i;
-        found = true;
-      }
+void read_tradeoff(const io::YamlMap& t, TuningStudy& study) {
+  const std::string metric = t.text("metric");
+  Tradeoff tradeoff;
+  bool found = false;
+  for (std::size_t i = 0; i < study.constraints.size() && !found; ++i) {
+    if (study.constraints[i].metric == metric) {
+      tradeoff.constraint = i;
+      found = true;
     }
-    if (!found) {
-      throw InputError(fmt::format(
-          "{}: '{}' is not constrained; the trade-off sweeps the limit of a constraint (add it "
-          "under constraints)",
-          t.locate("metric"), metric));
-    }
-    if (t.has("limits") == t.has("range")) {
-      throw InputError(
-          fmt::format("{}: give limits: [..] or range: {{from, to, count}}", t.locate("limits")));
-    }
-    tradeoff.limits = t.has("limits") ? t.numbers("limits") : io::read_value_range(t.map("range"));
-    for (double limit : tradeoff.limits) {
-      if (!(limit > 0.0)) {
-        throw InputError(fmt::format("{}: limit {} is not above 0", t.locate("limits"), limit));
-      }
-    }
-    t.finish();
-    study.tradeoff = tradeoff;
   }
+  if (!found) {
+    throw InputError(fmt::format(
+        "{}: '{}' is not constrained; the trade-off sweeps the limit of a constraint (add it "
+        "under constraints)",
+        t.locate("metric"), metric));
+  }
+  if (t.has("limits") == t.has("range")) {
+    throw InputError(
+        fmt::format("{}: give limits: [..] or range: {{from, to, count}}", t.locate("limits")));
+  }
+  tradeoff.limits = t.has("limits") ? t.numbers("limits") : io::read_value_range(t.map("range"));
+  for (double limit : tradeoff.limits) {
+    if (!(limit > 0.0)) {
+      throw InputError(fmt::format("{}: limit {} is not above 0", t.locate("limits"), limit));
+    }
+  }
+  t.finish();
+  study.tradeoff = tradeoff;
+}
 
-  // Every case and both ends of every variable on the model, so that a value the model rejects
-  // is reported now, not in the middle of the search.
+// Every case and both ends of every variable on the model, so that a value the model rejects
+// is reported now, not in the middle of the search.
+void check_design_box(TuningStudy& study) {
   std::vector<double> start;
   for (const auto& v : study.design) start.push_back(v.start);
   for (std::size_t c = 0; c < study.load_cases.size(); ++c) {
     const auto origin =
-        fmt::format("{}: load case '{}'", study_file.string(), study.load_cases[c].name);
+        fmt::format("{}: load case '{}'", study.study_file.string(), study.load_cases[c].name);
     const TuningModel model =
         build_tuning_model(study, FrictionVariant::kStudy, study.load_cases[c], start, origin);
     if (c == 0) study.model_has_friction = has_friction(model);
@@ -549,7 +560,7 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
       std::vector<double> x = start;
       x[v] = value;
       build_tuning_model(study, FrictionVariant::kStudy, study.load_cases.front(), x,
-                         fmt::format("{}: design variable '{}' = {:g}", study_file.string(),
+                         fmt::format("{}: design variable '{}' = {:g}", study.study_file.string(),
                                      study.design[v].name, value));
     }
   }
@@ -566,9 +577,26 @@ TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
           study, FrictionVariant::kStudy, study.load_cases.front(), x,
           fmt::format("{}: design corner{} (every combination within the bounds must be a valid "
                       "model; narrow the bounds)",
-                      study_file.string(), where));
+                      study.study_file.string(), where));
     }
   }
+}
+
+}  // namespace
+
+TuningStudy load_tuning_study(const std::filesystem::path& study_file) {
+  const io::YamlMap file = io::YamlMap::load(study_file);
+  TuningStudy study;
+  study.study_file = study_file;
+  const StudyModel model = read_model(file, study);
+  read_design_section(file, study, model);
+  read_load_cases(file, study);
+  check_design_not_fixed(file, study);
+  read_objective_and_constraints(file, study);
+  if (file.has("optimiser")) read_optimiser(file.map("optimiser"), study.optimiser);
+  if (file.has("evaluation")) read_evaluation(file.map("evaluation"), study.evaluation);
+  if (file.has("tradeoff")) read_tradeoff(file.map("tradeoff"), study);
+  check_design_box(study);
   check_record_lengths(file, study);
   if (file.has("friction_cost")) {
     const std::string s = file.choice("friction_cost", {"true", "false"});

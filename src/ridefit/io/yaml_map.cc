@@ -261,6 +261,14 @@ std::string YamlMap::choice(const std::string& key, const std::set<std::string>&
   return v;
 }
 
+bool YamlMap::is_mapping(const std::string& key) const { return required(key).IsMap(); }
+
+std::optional<std::size_t> YamlMap::list_length(const std::string& key) const {
+  const YAML::Node value = required(key);
+  if (!value.IsSequence()) return std::nullopt;
+  return value.size();
+}
+
 YamlMap YamlMap::map(const std::string& key) const {
   const YAML::Node value = required(key);
   if (!value.IsMap()) {

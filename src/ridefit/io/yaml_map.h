@@ -54,6 +54,9 @@ class YamlMap {
   std::vector<std::string> texts(const std::string& key) const;
   // A non-empty list of mappings, each wrapped for strict reading as "key[i]".
   std::vector<YamlMap> maps(const std::string& key) const;
+  // What `key` holds, without reading it: a mapping, or a list and its length (none otherwise).
+  bool is_mapping(const std::string& key) const;
+  std::optional<std::size_t> list_length(const std::string& key) const;
   // The keys of a mapping in file order (e.g. names under `roads:`), all marked as read.
   std::vector<std::string> keys() const;
   // A path read relative to the directory of this file.
