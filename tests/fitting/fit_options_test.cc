@@ -51,7 +51,7 @@ TEST(HysteresisFitOptions, ValidateNamesWhatIsWrong) {
   o.loss_scale_N = 0.0;
   EXPECT_TRUE(throws_input_error([&] { o.validate(); }, "loss scale"));
   o.loss_scale_N = 5.0;
-  o.max_iterations = 0;
+  o.max_iterations = -1;
   EXPECT_TRUE(throws_input_error([&] { o.validate(); }, "iteration limit"));
 }
 

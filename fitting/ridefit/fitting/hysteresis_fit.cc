@@ -128,6 +128,130 @@ void assess_adequacy(const std::vector<HysteresisRecord>& records,
   result.adequacy_note = a.note;
 }
 
+// The fit's uncertainty at its end: standard errors and correlations from ceres::Covariance
+// scaled by s² = 2·cost/(m − n), and the parameters the data leave undetermined (into
+// `result`). Returns the physical covariance of the blocks, none when it is not computable.
+std::optional<Eigen::MatrixXd> assess_uncertainty(
+    ceres::Problem& problem, double final_cost, const std::string& solver_message,
+    const std::vector<Block>& blocks, std::vector<double>& values, const std::vector<double>& units,
+    const std::array<std::pair<double, double>, kStrutParameters.size()>& bounds,
+    const std::vector<HysteresisRecord>& records, std::size_t samples,
+    HysteresisFitResult& result) {
+  const std::size_t n = blocks.size();
+  // Identifiability: the Jacobian with each column scaled by its parameter's size.
+  ceres::CRSMatrix crs;
+  double cost = 0.0;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs) ||
+      crs.num_rows == 0 || crs.num_cols == 0) {
+    throw RunError(fmt::format(
+        "fit: the strut model cannot be solved with its derivatives at the fit's end ({}); try "
+        "other start values",
+        solver_message));
+  }
+  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int row = 0; row < crs.num_rows; ++row) {
+    for (int k = crs.rows[static_cast<std::size_t>(row)];
+         k < crs.rows[static_cast<std::size_t>(row) + 1]; ++k) {
+      jacobian(row, crs.cols[static_cast<std::size_t>(k)]) =
+          crs.values[static_cast<std::size_t>(k)];
+    }
+  }
+  // (its columns are already per unit of each parameter's start size)
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeThinV);
+  const auto& sigma = svd.singularValues();
+
+  std::set<std::size_t> weak;
+  for (Eigen::Index i = 0; i < sigma.size(); ++i) {
+    if (sigma(i) < 1e-6 * sigma(0)) {
+      for (Eigen::Index j = 0; j < svd.matrixV().rows(); ++j) {
+        if (std::abs(svd.matrixV()(j, i)) > 0.3) weak.insert(static_cast<std::size_t>(j));
+      }
+    }
+  }
+  // Standard errors and correlation from ceres::Covariance, scaled by s².
+  const double dof = static_cast<double>(samples) - static_cast<double>(n);
+  const double s2 = dof > 0.0 ? 2.0 * final_cost / dof : 0.0;
+  ceres::Covariance::Options covariance_options;
+  covariance_options.algorithm_type = ceres::DENSE_SVD;
+  covariance_options.num_threads = 2;
+  ceres::Covariance covariance(covariance_options);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a; b < n; ++b) pairs.emplace_back(&values[a], &values[b]);
+  }
+  Eigen::MatrixXd cov =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  const bool have_covariance = weak.empty() && dof > 0.0 && covariance.Compute(pairs, &problem);
+  // (a Jacobian with a near-null direction has no finite covariance: those parameters are
+  // reported as undetermined below instead)
+  if (have_covariance) {
+    for (std::size_t a = 0; a < n; ++a) {
+      for (std::size_t b = a; b < n; ++b) {
+        double c = 0.0;
+        covariance.GetCovarianceBlock(&values[a], &values[b], &c);
+        const double physical = s2 * c * units[a] * units[b];
+        cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = physical;
+        cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = physical;
+      }
+    }
+    result.correlation = cov;
+    for (Eigen::Index a = 0; a < cov.rows(); ++a) {
+      for (Eigen::Index b = 0; b < cov.cols(); ++b) {
+        result.correlation(a, b) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
+      }
+    }
+  }
+  // A parameter the data leave undetermined: in a near-null direction of the Jacobian, with a
+  // standard error above half its size, or correlated beyond 0.995 with another (the data then
+  // fix only a combination of the two, e.g. damping and friction on a quasi-static triangle).
+  std::vector<std::string> pairs_note;
+  if (!have_covariance && weak.empty() && n > 0) {
+    // Ceres found the covariance rank-deficient: the smallest singular direction names the
+    // parameters the data do not fix.
+    const Eigen::Index last = sigma.size() - 1;
+    for (Eigen::Index j = 0; j < svd.matrixV().rows(); ++j) {
+      if (std::abs(svd.matrixV()(j, last)) > 0.3) weak.insert(static_cast<std::size_t>(j));
+    }
+  }
+  if (have_covariance) {
+    for (std::size_t b = 0; b < n; ++b) {
+      const auto [lo, hi] = bounds[blocks[b].parameter];
+      const double size = std::max(std::abs(values[b] * units[b]), 1e-3 * (hi - lo));
+      const auto i = static_cast<Eigen::Index>(b);
+      if (std::sqrt(cov(i, i)) > 0.5 * size) weak.insert(b);
+      for (std::size_t c = b + 1; c < n; ++c) {
+        const auto j = static_cast<Eigen::Index>(c);
+        // |ρ| > 0.995: each variance is inflated more than 100-fold by the other (1/(1 − ρ²)).
+        if (std::abs(result.correlation(i, j)) > 0.995) {
+          weak.insert(b);
+          weak.insert(c);
+          pairs_note.push_back(fmt::format("{} and {} (correlation {:.3f})",
+                                           describe(blocks[b], records),
+                                           describe(blocks[c], records), result.correlation(i, j)));
+        }
+      }
+    }
+  }
+  for (std::size_t b : weak) result.unidentifiable.push_back(describe(blocks[b], records));
+  if (!weak.empty()) {
+    std::string list;
+    for (const auto& name : result.unidentifiable) list += (list.empty() ? "" : ", ") + name;
+    result.identifiability_note = fmt::format(
+        "the data cannot determine {}{}{} (condition number of the scaled Jacobian {:.2g}): fix "
+        "{} or add a test that excites {}",
+        list, pairs_note.empty() ? "" : "; they cannot separate ",
+        [&] {
+          std::string text;
+          for (const auto& p : pairs_note) text += (text.empty() ? "" : ", ") + p;
+          return text;
+        }(),
+        sigma(0) / std::max(sigma(sigma.size() - 1), 1e-300),
+        weak.size() > 1 ? "some of them" : "it", weak.size() > 1 ? "them" : "it");
+  }
+  if (!have_covariance) return std::nullopt;
+  return cov;
+}
+
 }  // namespace
 
 ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
@@ -278,124 +402,19 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   for (const auto& r : records) samples += r.force_N.size();
   result.residual_rms_N = std::sqrt(2.0 * summary.final_cost / static_cast<double>(samples));
 
-  // Identifiability: the Jacobian with each column scaled by its parameter's size.
-  ceres::CRSMatrix crs;
-  double cost = 0.0;
-  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs) ||
-      crs.num_rows == 0 || crs.num_cols == 0) {
-    throw RunError(fmt::format(
-        "fit: the strut model cannot be solved with its derivatives at the fit's end ({}); try "
-        "other start values",
-        summary.message));
-  }
-  Eigen::MatrixXd jacobian = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
-  for (int row = 0; row < crs.num_rows; ++row) {
-    for (int k = crs.rows[static_cast<std::size_t>(row)];
-         k < crs.rows[static_cast<std::size_t>(row) + 1]; ++k) {
-      jacobian(row, crs.cols[static_cast<std::size_t>(k)]) =
-          crs.values[static_cast<std::size_t>(k)];
-    }
-  }
-  // (its columns are already per unit of each parameter's start size)
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian, Eigen::ComputeThinV);
-  const auto& sigma = svd.singularValues();
-
-  std::set<std::size_t> weak;
-  for (Eigen::Index i = 0; i < sigma.size(); ++i) {
-    if (sigma(i) < 1e-6 * sigma(0)) {
-      for (Eigen::Index j = 0; j < svd.matrixV().rows(); ++j) {
-        if (std::abs(svd.matrixV()(j, i)) > 0.3) weak.insert(static_cast<std::size_t>(j));
-      }
-    }
-  }
-  // Standard errors and correlation from ceres::Covariance, scaled by s².
   const std::size_t n = blocks.size();
-  const double dof = static_cast<double>(samples) - static_cast<double>(n);
-  const double s2 = dof > 0.0 ? 2.0 * summary.final_cost / dof : 0.0;
-  ceres::Covariance::Options covariance_options;
-  covariance_options.algorithm_type = ceres::DENSE_SVD;
-  covariance_options.num_threads = 2;
-  ceres::Covariance covariance(covariance_options);
-  std::vector<std::pair<const double*, const double*>> pairs;
-  for (std::size_t a = 0; a < n; ++a) {
-    for (std::size_t b = a; b < n; ++b) pairs.emplace_back(&values[a], &values[b]);
-  }
-  Eigen::MatrixXd cov =
-      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  const bool have_covariance = weak.empty() && dof > 0.0 && covariance.Compute(pairs, &problem);
-  // (a Jacobian with a near-null direction has no finite covariance: those parameters are
-  // reported as undetermined below instead)
-  if (have_covariance) {
-    for (std::size_t a = 0; a < n; ++a) {
-      for (std::size_t b = a; b < n; ++b) {
-        double c = 0.0;
-        covariance.GetCovarianceBlock(&values[a], &values[b], &c);
-        const double physical = s2 * c * units[a] * units[b];
-        cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = physical;
-        cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(a)) = physical;
-      }
-    }
-    result.correlation = cov;
-    for (Eigen::Index a = 0; a < cov.rows(); ++a) {
-      for (Eigen::Index b = 0; b < cov.cols(); ++b) {
-        result.correlation(a, b) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
-      }
-    }
-  }
-  // A parameter the data leave undetermined: in a near-null direction of the Jacobian, with a
-  // standard error above half its size, or correlated beyond 0.995 with another (the data then
-  // fix only a combination of the two, e.g. damping and friction on a quasi-static triangle).
-  std::vector<std::string> pairs_note;
-  if (!have_covariance && weak.empty() && n > 0) {
-    // Ceres found the covariance rank-deficient: the smallest singular direction names the
-    // parameters the data do not fix.
-    const Eigen::Index last = sigma.size() - 1;
-    for (Eigen::Index j = 0; j < svd.matrixV().rows(); ++j) {
-      if (std::abs(svd.matrixV()(j, last)) > 0.3) weak.insert(static_cast<std::size_t>(j));
-    }
-  }
-  if (have_covariance) {
-    for (std::size_t b = 0; b < n; ++b) {
-      const auto [lo, hi] = bounds[blocks[b].parameter];
-      const double size = std::max(std::abs(values[b] * units[b]), 1e-3 * (hi - lo));
-      const auto i = static_cast<Eigen::Index>(b);
-      if (std::sqrt(cov(i, i)) > 0.5 * size) weak.insert(b);
-      for (std::size_t c = b + 1; c < n; ++c) {
-        const auto j = static_cast<Eigen::Index>(c);
-        // |ρ| > 0.995: each variance is inflated more than 100-fold by the other (1/(1 − ρ²)).
-        if (std::abs(result.correlation(i, j)) > 0.995) {
-          weak.insert(b);
-          weak.insert(c);
-          pairs_note.push_back(fmt::format("{} and {} (correlation {:.3f})",
-                                           describe(blocks[b], records),
-                                           describe(blocks[c], records), result.correlation(i, j)));
-        }
-      }
-    }
-  }
-  for (std::size_t b : weak) result.unidentifiable.push_back(describe(blocks[b], records));
-  if (!weak.empty()) {
-    std::string list;
-    for (const auto& name : result.unidentifiable) list += (list.empty() ? "" : ", ") + name;
-    result.identifiability_note = fmt::format(
-        "the data cannot determine {}{}{} (condition number of the scaled Jacobian {:.2g}): fix "
-        "{} or add a test that excites {}",
-        list, pairs_note.empty() ? "" : "; they cannot separate ",
-        [&] {
-          std::string text;
-          for (const auto& p : pairs_note) text += (text.empty() ? "" : ", ") + p;
-          return text;
-        }(),
-        sigma(0) / std::max(sigma(sigma.size() - 1), 1e-300),
-        weak.size() > 1 ? "some of them" : "it", weak.size() > 1 ? "them" : "it");
-  }
+  const std::optional<Eigen::MatrixXd> cov =
+      assess_uncertainty(problem, summary.final_cost, summary.message, blocks, values, units,
+                         bounds, records, samples, result);
   for (std::size_t b = 0; b < n; ++b) {
     FittedParameter p;
     p.name = std::string(kStrutParameters[blocks[b].parameter].name());
     if (blocks[b].record >= 0) p.file = records[static_cast<std::size_t>(blocks[b].record)].source;
     p.value = values[b] * units[b];
-    if (have_covariance)
-      p.standard_error = std::sqrt(cov(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(b)));
+    if (cov) {
+      p.standard_error =
+          std::sqrt((*cov)(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(b)));
+    }
     result.parameters.push_back(p);
   }
   for (std::size_t r = 0; r < records.size(); ++r) {

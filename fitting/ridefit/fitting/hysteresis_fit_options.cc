@@ -36,8 +36,8 @@ void HysteresisFitOptions::validate() const {
   if (!(loss_scale_N > 0.0) || !std::isfinite(loss_scale_N)) {
     throw InputError(fmt::format("loss scale {} N: expected a finite value > 0", loss_scale_N));
   }
-  if (max_iterations < 1) {
-    throw InputError(fmt::format("iteration limit {}: expected at least 1", max_iterations));
+  if (max_iterations < 0) {  // 0: evaluate the start only
+    throw InputError(fmt::format("iteration limit {}: expected at least 0", max_iterations));
   }
   if (!(max_nrmse_percent > 0.0)) {
     throw InputError(fmt::format("NRMSE threshold {} %: expected a value > 0", max_nrmse_percent));

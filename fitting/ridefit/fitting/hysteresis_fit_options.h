@@ -28,7 +28,7 @@ struct HysteresisFitOptions {
 
   // InputError naming the option for: no free parameter, an unknown or repeated one, a per-file
   // parameter that is not free, bounds of an unknown parameter or with lower >= upper or not
-  // finite, a loss scale, iteration limit or NRMSE threshold that is not > 0.
+  // finite, a loss scale or NRMSE threshold that is not > 0, a negative iteration limit.
   void validate() const;
 
   // Every strut parameter's bounds: kStrutParameters' defaults with `bounds` applied.

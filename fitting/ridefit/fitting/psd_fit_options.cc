@@ -54,8 +54,8 @@ void PsdFitOptions::validate(bool fitting) const {
     throw InputError(
         fmt::format("relative tolerance {}: expected a value in (0, 0.1]", relative_tolerance));
   }
-  if (max_iterations < 1) {
-    throw InputError(fmt::format("iteration limit {}: expected at least 1", max_iterations));
+  if (max_iterations < 0) {  // 0: evaluate the start only
+    throw InputError(fmt::format("iteration limit {}: expected at least 0", max_iterations));
   }
   if (starts < 1) throw InputError(fmt::format("starts {}: expected at least 1", starts));
 }

@@ -45,7 +45,7 @@ struct PsdFitOptions {
   // InputError naming the option for: an unknown or repeated free parameter or more than
   // kMaxFree of them (and none at all when `fitting`), bounds with lower >= upper or not
   // finite, a band that is not 0 < low < high, a segment, loss
-  // scale, tolerance, iteration limit or start count that is not > 0.
+  // scale, tolerance or start count that is not > 0, a negative iteration limit.
   void validate(bool fitting = true) const;
 };
 
