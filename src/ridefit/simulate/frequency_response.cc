@@ -2,7 +2,6 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
-#include <Eigen/SVD>
 #include <numbers>
 #include <stdexcept>
 
@@ -17,12 +16,14 @@ FrequencyResponse::FrequencyResponse(const LinearStateSpace& system) : system_(s
   const Eigen::EigenSolver<Eigen::MatrixXd> eigen(system.A);
   if (eigen.info() != Eigen::Success) return;  // the LU path still works
   const Eigen::MatrixXcd v = eigen.eigenvectors();
-  const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(v);
-  const auto& s = svd.singularValues();
-  if (!(s(s.size() - 1) > 0.0) || s(0) / s(s.size() - 1) > 1e8) return;
+  // An estimate of 1/cond₁(V) from the LU the modal inputs need anyway (an SVD of V for the
+  // 2-norm condition took about 8 % of a half car's frequency-domain evaluation).
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(v);
+  const double rcond = lu.rcond();
+  if (!(rcond > 1e-8)) return;
   eigenvalues_ = eigen.eigenvalues();
   output_modes_ = system.C.cast<std::complex<double>>() * v;
-  modal_inputs_ = v.partialPivLu().solve(system.B.cast<std::complex<double>>());
+  modal_inputs_ = lu.solve(system.B.cast<std::complex<double>>());
   eigenbasis_ = true;
 }
 

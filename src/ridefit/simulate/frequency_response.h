@@ -10,7 +10,8 @@ namespace ridefit::simulate {
 // H(jω) = C·(jωI − A)⁻¹·B + D of a linear system at any frequency, fast enough for a sweep: A
 // is diagonalised once, A = V·Λ·V⁻¹, so that H(jω) = (C·V)·diag(1/(jω − λ_i))·(V⁻¹·B) + D costs
 // O(n·inputs·outputs) per frequency. When V is ill-conditioned (a defective or nearly defective
-// A, cond(V) > 1e8) the eigenbasis would lose digits, and each frequency is solved directly with
+// A, cond₁(V) estimated above
+// 1e8) the eigenbasis would lose digits, and each frequency is solved directly with
 // a partial-pivoting LU of (jωI − A) instead.
 class FrequencyResponse {
  public:
