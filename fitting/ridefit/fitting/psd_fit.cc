@@ -292,10 +292,8 @@ PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
     }
   } else {
     if (!table.has("road")) {
-      throw InputError(
-          fmt::format("{}: no road column; give the road as a column or as an excitation file "
-                      "(--excitation)",
-                      m.source));
+      throw InputError(fmt::format(
+          "{}: no road column; give the road as a column or as an excitation file", m.source));
     }
     const auto& road = table.column("road");
     if (road.unit != "m") {

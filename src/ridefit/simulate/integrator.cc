@@ -95,8 +95,8 @@ std::string explain(int flag, bool fixed_step) {
       flag == ARK_REPTD_RHSFUNC_ERR || flag == ARK_UNREC_RHSFUNC_ERR || flag == ARK_RHSFUNC_FAIL) {
     return fixed_step
                ? "the state became non-finite: the step is beyond RK4's stability limit for this "
-                 "model and road (friction with a large sigma0 is stiff); use a smaller --step "
-                 "or --method cvode"
+                 "model and road (friction with a large sigma0 is stiff); use a smaller step "
+                 "or the cvode method"
                : "the state became non-finite; check the model for extreme parameter values";
   }
   if (flag == CV_TOO_MUCH_WORK) {
@@ -224,7 +224,7 @@ void run_rk4(const std::vector<double>& output_times_s, const IntegratorOptions&
   if (span_s / h > kMaxFixedSteps) {
     throw InputError(fmt::format(
         "RK4 step {} s over {} s would take {:.3g} steps (at most {:g}); use a larger step or "
-        "--method cvode",
+        "the cvode method",
         h, span_s, span_s / h, kMaxFixedSteps));
   }
   session.arkode = true;

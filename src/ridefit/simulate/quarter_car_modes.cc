@@ -33,7 +33,8 @@ Eigen::MatrixXd quarter_car_state_matrix(const model::QuarterCar& car) {
 ModalAnalysis quarter_car_modes(const model::QuarterCar& car) {
   if (car.damper_state() == model::DamperState::kStickSlip) {
     throw InputError(
-        "modes are defined for the linear slip and stick models; choose --state slip or stick");
+        "modes are defined for the linear slip and stick models; choose the slip or the stick "
+        "state");
   }
   if (!car.is_linear()) {
     throw InputError(fmt::format(

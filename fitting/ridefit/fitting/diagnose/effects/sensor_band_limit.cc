@@ -21,7 +21,7 @@ class SensorBandLimit : public Effect {
     if (baseline.kind != DataKind::kStrutLoops) {
       if (baseline.car.parameters().sensors.acc_sensor_cutoff_Hz > 0.0) {
         return "the baseline already has an accelerometer low-pass (free acc_sensor_cutoff_Hz "
-               "with --free to refit it)";
+               "to refit it)";
       }
       return "";
     }

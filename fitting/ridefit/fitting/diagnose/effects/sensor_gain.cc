@@ -26,7 +26,7 @@ class SensorGain : public Effect {
       const auto& s = baseline.car.parameters().sensors;
       if (s.body_acc_gain != 1.0 || s.wheel_acc_gain != 1.0) {
         return "the baseline already has accelerometer gains (free body_acc_gain or "
-               "wheel_acc_gain with --free to refit them)";
+               "wheel_acc_gain as free parameters to refit them)";
       }
       return "";
     }

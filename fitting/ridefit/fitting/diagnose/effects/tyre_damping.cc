@@ -18,7 +18,7 @@ class TyreDamping : public Effect {
       return "strut rig loops have no tyre";
     }
     if (baseline.car.parameters().tyre_damping_Ns_per_m > 0.0) {
-      return "the baseline already has tyre damping (free it with --free to refit it)";
+      return "the baseline already has tyre damping (free it to refit it)";
     }
     return "";
   }
