@@ -18,8 +18,8 @@ namespace ridefit::fitting {
 namespace {
 
 using testing::mr_strut;
-using testing::RandomRigMotion;
-using testing::SwitchingCommand;
+using testing::random_rig_motion;
+using testing::switching_command;
 
 double relative_rms_difference(const std::vector<double>& a, const std::vector<double>& b) {
   std::vector<double> d;
@@ -29,8 +29,8 @@ double relative_rms_difference(const std::vector<double>& a, const std::vector<d
 
 TEST(ControlledStrut, EsdirkForceMatchesCvodeWithASwitchingCommand) {
   const auto p = mr_strut();
-  const SwitchingCommand u(5, 4.0, 2.0);
-  const auto r = testing::cvode_controlled_record(p, RandomRigMotion(3), u, 4.0, 1000.0);
+  const auto u = switching_command(5, 4.0, 2.0);
+  const auto r = testing::cvode_controlled_record(p, random_rig_motion(3), u, 4.0, 1000.0);
   const auto force =
       simulate::strut_test_force<double>(r.time_s, r.displacement_m, p, p, {}, r.command);
   ASSERT_TRUE(force.has_value());
@@ -46,7 +46,7 @@ TEST(ControlledStrut, EsdirkForceMatchesCvodeWithASwitchingCommand) {
 
 TEST(ControlledStrut, LoadCellChainMatchesCvodeClosedForms) {
   const auto base = mr_strut();
-  const SwitchingCommand u(5, 3.0, 2.0);
+  const auto u = switching_command(5, 3.0, 2.0);
   for (int chain = 0; chain < 4; ++chain) {
     auto p = base;
     if (chain == 0) p.force_gain = 0.93;
@@ -56,7 +56,7 @@ TEST(ControlledStrut, LoadCellChainMatchesCvodeClosedForms) {
       p.force_sensor_cutoff_Hz = 40.0;
       p.force_sensor_order = 2;
     }
-    const auto r = testing::cvode_controlled_record(p, RandomRigMotion(4), u, 3.0, 1000.0);
+    const auto r = testing::cvode_controlled_record(p, random_rig_motion(4), u, 3.0, 1000.0);
     const auto force =
         simulate::strut_test_force<double>(r.time_s, r.displacement_m, p, p, {}, r.command);
     ASSERT_TRUE(force.has_value());
@@ -77,9 +77,9 @@ TEST(ControlledStrut, TangentsMatchCentralDifferencesOnFrozenSteps) {
   p.force_delay_s = 0.0013;
   p.force_sensor_cutoff_Hz = 60.0;
   p.force_gain = 1.05;
-  const SwitchingCommand u(6, 1.2, 2.0);
+  const auto u = switching_command(6, 1.2, 2.0);
   std::vector<double> t, x, command;
-  const RandomRigMotion motion(7);
+  const auto motion = random_rig_motion(7);
   for (int k = 0; k <= 600; ++k) {
     t.push_back(k * 2e-3);
     x.push_back(motion(t.back()));
@@ -125,8 +125,8 @@ TEST(ControlledStrut, TangentsMatchCentralDifferencesOnFrozenSteps) {
 // law free, started 20–40 % off: all back within 2 %.
 TEST(ControlledStrut, FitRecoversEveryParameterWithinTwoPercent) {
   const auto truth = mr_strut();
-  const SwitchingCommand u(11, 8.0, 2.0);
-  const auto r = testing::cvode_controlled_record(truth, RandomRigMotion(12), u, 8.0, 1000.0);
+  const auto u = switching_command(11, 8.0, 2.0);
+  const auto r = testing::cvode_controlled_record(truth, random_rig_motion(12), u, 8.0, 1000.0);
   auto start = truth;
   start.dahl_sigma0_N_per_m *= 0.7;
   start.coulomb_force_N *= 1.3;
@@ -153,8 +153,8 @@ TEST(ControlledStrut, FitRecoversEveryParameterWithinTwoPercent) {
 }
 
 TEST(ControlledStrut, CommandParametersWithoutACommandColumnAreRefused) {
-  auto r = testing::cvode_controlled_record(mr_strut(), RandomRigMotion(1),
-                                            SwitchingCommand(1, 1.0, 1.0), 1.0, 200.0);
+  auto r = testing::cvode_controlled_record(mr_strut(), random_rig_motion(1),
+                                            switching_command(1, 1.0, 1.0), 1.0, 200.0);
   r.command.clear();
   HysteresisFitOptions options;
   options.free = {"damping_per_command_Ns_per_m"};

@@ -11,6 +11,9 @@
 #include <memory>
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/friction_compression.h"
+#include "ridefit/synthetic/load_cell.h"
+#include "ridefit/synthetic/multisine.h"
+#include "ridefit/synthetic/triangle_history.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {
@@ -25,39 +28,17 @@ constexpr auto kTriangle = simulate::RigInterpolation::kLinear;
 
 HysteresisRecord triangle(const model::StrutTestParameters<double>& p, int cycles,
                           double noise_N = 0.0, std::uint64_t seed = 1) {
-  HysteresisRecord r;
-  r.source = "triangle";
-  const double period = 12.0, rate = 200.0;
-  for (int k = 0; k <= static_cast<int>(cycles * period * rate); ++k) {
-    const double t = k / rate;
-    const double phase = std::fmod(t, period) / period;  // 0 → 3 → 0 → −3 → 0 mm
-    const double x = phase < 0.25   ? 0.012 * phase
-                     : phase < 0.75 ? 0.006 - 0.012 * phase
-                                    : -0.012 + 0.012 * phase;
-    r.time_s.push_back(t);
-    r.displacement_m.push_back(x);
-  }
+  const synthetic::TriangleHistory x(0.003, 0.001);  // 0 → 3 → 0 → −3 → 0 mm in 12 s
   // CVODE at rtol 1e-10 on the analytic triangle (not the solver the fit uses).
-  r.force_N = testing::cvode_rig_force(
-      r.time_s,
-      [](double t) {
-        const double phase = std::fmod(t, 12.0) / 12.0;
-        return phase < 0.25   ? 0.012 * phase
-               : phase < 0.75 ? 0.006 - 0.012 * phase
-                              : -0.012 + 0.012 * phase;
-      },
-      p);
+  HysteresisRecord r = testing::cvode_rig_record(p, x, cycles * x.period_s(), 200.0, "triangle");
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, noise_N > 0 ? noise_N : 1.0);
-  if (noise_N > 0) {
-    for (double& f : r.force_N) f += noise(rng);
-  }
+  r.force_N = synthetic::read_load_cell(r.force_N, {noise_N, 0.0}, rng);
   return r;
 }
 
 // A dynamic history: three sines (0.7, 2.3 and 6.1 Hz) for 20 s at 1 kHz.
 HysteresisRecord dynamic(const model::StrutTestParameters<double>& p) {
-  return testing::cvode_rig_record(p, testing::ThreeSines{}, 20.0, 1000.0, "dynamic");
+  return testing::cvode_rig_record(p, synthetic::lab_three_sines(), 20.0, 1000.0, "dynamic");
 }
 
 TEST(HysteresisFit, QuasiStaticTriangleRecoversTheFrictionWithinHalfAPercent) {

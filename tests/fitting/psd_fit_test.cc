@@ -21,8 +21,8 @@
 #include "ridefit/road/measured_road.h"
 #include "ridefit/simulate/quarter_car_sensitivity.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 #include "support/passat.h"
-#include "support/white_noise.h"
 
 namespace ridefit::fitting {
 namespace {
@@ -195,7 +195,7 @@ NoiseFloors add_white_noise(PsdMeasurement& m, double fraction, unsigned seed) {
     double power = 0.0;
     for (double v : *series) power += v * v;
     const double sigma = fraction * std::sqrt(power / static_cast<double>(series->size()));
-    const auto noise = testing::white_noise(series->size(), sigma, rng);
+    const auto noise = synthetic::gaussian_noise(series->size(), sigma, rng);
     for (std::size_t k = 0; k < series->size(); ++k) (*series)[k] += noise[k];
     *level = 2.0 * sigma * sigma / m.sample_rate_Hz;
   }

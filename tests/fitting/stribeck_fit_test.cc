@@ -8,6 +8,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/synthetic/multisine.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::fitting {
@@ -21,7 +22,7 @@ model::StrutTestParameters<double> truth() {
 // Three sines (0.7, 2.3 and 6.1 Hz) for 10 s at 1 kHz: damper speeds from 0 to ~60 mm/s.
 HysteresisRecord dynamic(const model::StrutTestParameters<double>& p) {
   // CVODE at rtol 1e-10 on the analytic multisine: not the solver the fit uses.
-  return testing::cvode_rig_record(p, testing::ThreeSines{}, 10.0, 1000.0, "dynamic");
+  return testing::cvode_rig_record(p, synthetic::lab_three_sines(), 10.0, 1000.0, "dynamic");
 }
 
 TEST(StribeckFit, TheNewParametersAreFittableByName) {

@@ -11,6 +11,7 @@
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/signal/statistics.h"
 #include "ridefit/simulate/strut_test_response.h"
+#include "ridefit/synthetic/load_cell.h"
 #include "support/controlled_damper_record.h"
 #include "support/cvode_rig_record.h"
 #include "support/passat.h"
@@ -18,20 +19,17 @@
 namespace ridefit::fitting {
 namespace {
 
-// A random displacement: 40 sines log-spaced over 0.5–20 Hz (about 3 mm RMS), seeded phases.
-using RandomDisplacement = testing::RandomRigMotion;
-
 model::StrutTestParameters<double> set_a() { return {2e6, 90.0, 1.5, 600e3, 1500.0, 0, 0, 0}; }
 model::StrutTestParameters<double> set_b() { return {8e5, 30.0, 0.8, 400e3, 2600.0, 0, 0, 0}; }
 
 HysteresisRecord cvode_record(const model::StrutTestParameters<double>& p, double duration_s,
                               double noise_share = 0.0, unsigned seed = 3) {
-  auto r = testing::cvode_rig_record(p, RandomDisplacement(seed), duration_s, 1000.0, "cvode");
-  if (noise_share > 0.0) {
-    std::mt19937_64 rng(seed + 100);
-    std::normal_distribution<double> noise(0.0, noise_share * signal::rms(r.force_N));
-    for (double& f : r.force_N) f += noise(rng);
-  }
+  // A random displacement: 40 sines log-spaced over 0.5–20 Hz (about 4 mm RMS), seeded phases.
+  auto r =
+      testing::cvode_rig_record(p, testing::random_rig_motion(seed), duration_s, 1000.0, "cvode");
+  std::mt19937_64 rng(seed + 100);
+  r.force_N =
+      synthetic::read_load_cell(r.force_N, {noise_share * signal::rms(r.force_N), 0.0}, rng);
   return r;
 }
 

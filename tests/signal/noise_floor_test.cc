@@ -15,9 +15,9 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/signal/biquad_cascade.h"
 #include "ridefit/signal/welch_psd.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 #include "support/hidden_effect_record.h"
 #include "support/passat.h"
-#include "support/white_noise.h"
 
 namespace ridefit::signal {
 namespace {
@@ -27,7 +27,7 @@ constexpr double kRate_Hz = 200.0;
 TEST(NoiseFloor, WhiteNoiseAloneGivesItsLevel) {
   std::mt19937_64 rng(3);
   const double sigma = 0.2;
-  const auto x = testing::white_noise(30 * 200, sigma, rng);
+  const auto x = synthetic::gaussian_noise(30 * 200, sigma, rng);
   const double truth = 2.0 * sigma * sigma / kRate_Hz;  // one-sided
   const double estimate = estimate_white_noise_floor(x, kRate_Hz, 30.0);
   // 70 bins of ν ≈ 110 each: the fitted constant scatters by ~2 %.
@@ -38,14 +38,14 @@ TEST(NoiseFloor, WhiteNoiseAloneGivesItsLevel) {
 // falls as f⁻⁴, and the estimate finds the noise there.
 TEST(NoiseFloor, NoiseUnderARolledOffResponse) {
   std::mt19937_64 rng(4);
-  const auto input = testing::white_noise(60 * 200, 1.0, rng);
+  const auto input = synthetic::gaussian_noise(60 * 200, 1.0, rng);
   const double w = 2.0 * std::numbers::pi * 10.0;
   const AnalogueSection section{{w * w, 0.0, 0.0}, {w * w, 0.2 * w, 1.0}, 10.0};
   auto x = BiquadCascade::from_analogue(std::vector{section}, kRate_Hz).filter(input);
   double power = 0.0;
   for (double v : x) power += v * v;
   const double sigma = 0.01 * std::sqrt(power / static_cast<double>(x.size()));
-  const auto noise = testing::white_noise(x.size(), sigma, rng);
+  const auto noise = synthetic::gaussian_noise(x.size(), sigma, rng);
   for (std::size_t k = 0; k < x.size(); ++k) x[k] += noise[k];
   const double truth = 2.0 * sigma * sigma / kRate_Hz;
   const double estimate = estimate_white_noise_floor(x, kRate_Hz, 30.0);
@@ -73,7 +73,7 @@ TEST(NoiseFloor, AResponseThatFallsToNyquistIsNotTakenForTheFloor) {
   const PowerSpectralDensity clean = welch_psd(x, kRate_Hz, {.segment_length_samples = 200});
   double lowest = clean.psd[clean.psd.size() - 2];
   const double sigma = std::sqrt(lowest * kRate_Hz / 2.0 / 2500.0);
-  const auto noise = testing::white_noise(n, sigma, rng);
+  const auto noise = synthetic::gaussian_noise(n, sigma, rng);
   for (std::size_t k = 0; k < n; ++k) x[k] += noise[k];
   EXPECT_LT(estimate_white_noise_floor(x, kRate_Hz, 30.0), 0.05 * lowest);
 }
@@ -101,7 +101,7 @@ TEST(NoiseFloor, ABandLimitedNoiseFreeVehicleRecordHasNoFloor) {
 
 TEST(NoiseFloor, BadInputIsAnInputError) {
   std::mt19937_64 rng(5);
-  const auto x = testing::white_noise(2000, 1.0, rng);
+  const auto x = synthetic::gaussian_noise(2000, 1.0, rng);
   EXPECT_THROW(estimate_white_noise_floor(std::vector<double>(10, 0.0), kRate_Hz, 30.0),
                InputError);
   EXPECT_THROW(estimate_white_noise_floor(x, 0.0, 30.0), InputError);

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "ridefit/signal/welch_psd.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 #include "support/input_error_message.h"
-#include "support/white_noise.h"
 
 namespace ridefit::signal {
 namespace {
@@ -35,7 +35,7 @@ TEST(PsdAverage, RepetitionsReduceVarianceAndAddDegreesOfFreedom) {
   std::mt19937_64 rng(99);
   std::vector<PowerSpectralDensity> runs;
   for (std::size_t r = 0; r < records; ++r) {
-    runs.push_back(welch_psd(testing::white_noise(4 * length, sigma, rng), fs, options));
+    runs.push_back(welch_psd(synthetic::gaussian_noise(4 * length, sigma, rng), fs, options));
   }
   const PowerSpectralDensity mean = average_psd(runs);
   EXPECT_EQ(mean.segment_count, 4 * records);
@@ -61,8 +61,8 @@ TEST(PsdAverage, RepetitionsReduceVarianceAndAddDegreesOfFreedom) {
 TEST(PsdAverage, UnequalRecordsAreWeightedByDegreesOfFreedom) {
   std::mt19937_64 rng(3);
   const WelchOptions options{.segment_length_samples = 256};  // 50 % overlap
-  const auto a = welch_psd(testing::white_noise(256 * 3, 1.0, rng), 100.0, options);
-  const auto b = welch_psd(testing::white_noise(256 * 20, 1.0, rng), 100.0, options);
+  const auto a = welch_psd(synthetic::gaussian_noise(256 * 3, 1.0, rng), 100.0, options);
+  const auto b = welch_psd(synthetic::gaussian_noise(256 * 20, 1.0, rng), 100.0, options);
   const std::vector<PowerSpectralDensity> runs{a, b};
   const auto mean = average_psd(runs);
   EXPECT_EQ(mean.segment_count, a.segment_count + b.segment_count);
@@ -80,7 +80,7 @@ TEST(PsdAverage, UnequalRecordsAreWeightedByDegreesOfFreedom) {
 
 TEST(PsdAverage, MismatchedRecordsNameTheRecordAndTheQuantity) {
   std::mt19937_64 rng(4);
-  const auto x = testing::white_noise(2048, 1.0, rng);
+  const auto x = synthetic::gaussian_noise(2048, 1.0, rng);
   const auto base = welch_psd(x, 100.0, {.segment_length_samples = 256});
   const std::vector<std::string> names{"run_a.csv", "run_b.csv"};
   const auto message = [&](const PowerSpectralDensity& other) {

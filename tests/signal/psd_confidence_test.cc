@@ -11,7 +11,7 @@
 #include "ridefit/signal/psd_average.h"
 #include "ridefit/signal/psd_smoothing.h"
 #include "ridefit/signal/welch_psd.h"
-#include "support/white_noise.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 
 namespace ridefit::signal {
 namespace {
@@ -42,7 +42,7 @@ TEST(PsdConfidence, TabulatedQuantilesAndLargeDofLimit) {
 
 TEST(PsdConfidence, SpectrumIntervalUsesPerBinDof) {
   std::mt19937_64 rng(31);
-  const auto s = welch_psd(testing::white_noise(4096, 1.0, rng), 100.0,
+  const auto s = welch_psd(synthetic::gaussian_noise(4096, 1.0, rng), 100.0,
                            {.segment_length_samples = 256, .overlap_fraction = 0.0});
   const PsdConfidenceInterval ci = psd_confidence_interval(s, 0.8);
   ASSERT_EQ(ci.lower.size(), s.psd.size());
@@ -109,7 +109,7 @@ void expect_tails(const Coverage& c, double confidence) {
 TEST(PsdConfidence, NinetyPercentCoverageWithoutOverlap) {
   const auto c =
       white_noise_coverage(400, 0.9, 4, [](double fs, double sigma, std::mt19937_64& rng) {
-        return welch_psd(testing::white_noise(8 * 256, sigma, rng), fs,
+        return welch_psd(synthetic::gaussian_noise(8 * 256, sigma, rng), fs,
                          {.segment_length_samples = 256, .overlap_fraction = 0.0});
       });
   expect_tails(c, 0.9);
@@ -118,7 +118,7 @@ TEST(PsdConfidence, NinetyPercentCoverageWithoutOverlap) {
 TEST(PsdConfidence, NinetyPercentCoverageWithHalfOverlap) {
   const auto c =
       white_noise_coverage(400, 0.9, 4, [](double fs, double sigma, std::mt19937_64& rng) {
-        auto s = welch_psd(testing::white_noise(8 * 256, sigma, rng), fs,
+        auto s = welch_psd(synthetic::gaussian_noise(8 * 256, sigma, rng), fs,
                            {.segment_length_samples = 256, .overlap_fraction = 0.5});
         EXPECT_EQ(s.segment_count, 15u);
         return s;
@@ -133,7 +133,7 @@ TEST(PsdConfidence, CoverageAfterAveragingAndSmoothing) {
       white_noise_coverage(800, 0.8, 8, [](double fs, double sigma, std::mt19937_64& rng) {
         std::vector<PowerSpectralDensity> runs;
         for (int r = 0; r < 3; ++r) {
-          runs.push_back(welch_psd(testing::white_noise(5 * 128, sigma, rng), fs,
+          runs.push_back(welch_psd(synthetic::gaussian_noise(5 * 128, sigma, rng), fs,
                                    {.segment_length_samples = 256, .overlap_fraction = 0.5}));
         }
         return smooth_psd(average_psd(runs), 5);

@@ -9,7 +9,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/signal/welch_psd.h"
-#include "support/white_noise.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 
 namespace ridefit::signal {
 namespace {
@@ -66,7 +66,7 @@ TEST(PsdSmoothing, DegreesOfFreedomWithoutOverlapMatchClosedForm) {
   // Hann bins without overlap: corr(1) = 4/9, corr(2) = 1/36, so for M = 5 in the interior
   //   ν_s = M²·ν / (M + 2·(4·4/9 + 3·1/36)).
   std::mt19937_64 rng(8);
-  const auto s = welch_psd(testing::white_noise(6 * 128, 1.0, rng), 50.0,
+  const auto s = welch_psd(synthetic::gaussian_noise(6 * 128, 1.0, rng), 50.0,
                            {.segment_length_samples = 128, .overlap_fraction = 0.0});
   const auto smoothed = smooth_psd(s, 5);
   EXPECT_EQ(smoothed.smoothing_bins, 5u);
@@ -91,7 +91,7 @@ TEST(PsdSmoothing, DegreesOfFreedomMatchObservedVariance) {
     double sum_sq = 0.0, count = 0.0, nu = 0.0;
     for (int realisation = 0; realisation < 300; ++realisation) {
       const auto s =
-          smooth_psd(welch_psd(testing::white_noise(2048, sigma, rng), fs,
+          smooth_psd(welch_psd(synthetic::gaussian_noise(2048, sigma, rng), fs,
                                {.segment_length_samples = 512, .overlap_fraction = overlap}),
                      window);
       nu = s.degrees_of_freedom[100];

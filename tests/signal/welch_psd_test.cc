@@ -12,7 +12,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/spectrum_peak.h"
-#include "support/white_noise.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 
 namespace ridefit::signal {
 namespace {
@@ -80,7 +80,7 @@ TEST(WelchPsd, WhiteNoiseLevelScatterAndParseval) {
   const double fs = 200.0, sigma = 0.3;
   const std::size_t n = 1u << 20, length = 1024;
   std::mt19937_64 rng(20240611);
-  const std::vector<double> x = testing::white_noise(n, sigma, rng);
+  const std::vector<double> x = synthetic::gaussian_noise(n, sigma, rng);
 
   // The scatter over bins checks the equivalent degrees of freedom at several overlaps
   // (50 % and 75 % lean on the numerically summed window correlation).
@@ -116,7 +116,7 @@ TEST(WelchPsd, WhiteNoiseLevelScatterAndParseval) {
 
 TEST(WelchPsd, CarriesDegreesOfFreedomAndHop) {
   std::mt19937_64 rng(5);
-  const auto x = testing::white_noise(5000, 1.0, rng);
+  const auto x = synthetic::gaussian_noise(5000, 1.0, rng);
   const auto plain = welch_psd(x, 100.0, {.segment_length_samples = 500, .overlap_fraction = 0.0});
   EXPECT_EQ(plain.hop_samples, 500u);
   EXPECT_EQ(plain.smoothing_bins, 1u);

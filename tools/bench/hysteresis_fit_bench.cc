@@ -7,10 +7,12 @@
 //   hysteresis_fit_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-#include <numbers>
+#include <functional>
 
 #include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/synthetic/multisine.h"
+#include "ridefit/synthetic/reference_rig_record.h"
+#include "ridefit/synthetic/triangle_history.h"
 
 namespace {
 
@@ -23,22 +25,12 @@ ridefit::model::StrutTestParameters<double> truth() {
 HysteresisRecord record(bool dynamic) {
   HysteresisRecord r;
   const auto p = truth();
-  if (dynamic) {
-    for (int k = 0; k <= 60000; ++k) {
-      const double t = k * 1e-3, w = 2.0 * std::numbers::pi;
-      r.time_s.push_back(t);
-      r.displacement_m.push_back(0.003 * std::sin(w * 0.7 * t) + 0.0015 * std::sin(w * 2.3 * t) +
-                                 0.0008 * std::sin(w * 6.1 * t));
-    }
-  } else {
-    for (int k = 0; k <= 10 * 12 * 200; ++k) {
-      const double t = k / 200.0, phase = std::fmod(t, 12.0) / 12.0;
-      r.time_s.push_back(t);
-      r.displacement_m.push_back(phase < 0.25   ? 0.012 * phase
-                                 : phase < 0.75 ? 0.006 - 0.012 * phase
-                                                : -0.012 + 0.012 * phase);
-    }
-  }
+  const std::function<double(double)> x =
+      dynamic ? std::function<double(double)>(ridefit::synthetic::lab_three_sines())
+              : ridefit::synthetic::TriangleHistory(0.003, 0.001);
+  r.time_s = dynamic ? ridefit::synthetic::sample_times(60001, 1000.0)
+                     : ridefit::synthetic::sample_times(10 * 12 * 200 + 1, 200.0);
+  for (double t : r.time_s) r.displacement_m.push_back(x(t));
   // The triangle is straight between samples: linear interpolation, as the fit uses below.
   ridefit::simulate::StrutTestSolverOptions solver;
   if (!dynamic) solver.interpolation = ridefit::simulate::RigInterpolation::kLinear;

@@ -166,15 +166,6 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& en
   return overrides;
 }
 
-std::string with_override_origin(std::string message, const std::string& origin) {
-  const std::string marker = io::kOverrideMarker;
-  for (auto at = message.find(marker); at != std::string::npos;
-       at = message.find(marker, at + origin.size())) {
-    message.replace(at, marker.size(), origin);
-  }
-  return message;
-}
-
 io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
                                              const std::vector<std::string>& set_entries,
                                              const std::string& damper_state,

@@ -78,9 +78,8 @@ io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
                                              const std::string& damper_state,
                                              const std::string& state_flag);
 
-// `message` with every io::kOverrideMarker replaced by `origin` (e.g. "given on the command line
-// as --set ").
-std::string with_override_origin(std::string message, const std::string& origin);
+// `message` with every io::kOverrideMarker replaced by `origin` (io/quarter_car_file.h).
+using io::with_override_origin;
 
 nlohmann::json to_json(const simulate::SolverStatistics& statistics);
 

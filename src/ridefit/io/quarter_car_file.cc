@@ -229,4 +229,13 @@ QuarterCarFile load_quarter_car(const std::filesystem::path& path,
   }
 }
 
+std::string with_override_origin(std::string message, const std::string& origin) {
+  const std::string marker = kOverrideMarker;
+  for (auto at = message.find(marker); at != std::string::npos;
+       at = message.find(marker, at + origin.size())) {
+    message.replace(at, marker.size(), origin);
+  }
+  return message;
+}
+
 }  // namespace ridefit::io

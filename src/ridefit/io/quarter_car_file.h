@@ -79,6 +79,9 @@ struct QuarterCarFile {
 // override ends with "(" kOverrideMarker "KEY=VALUE)"; callers replace the marker with where
 // the override came from (a --set flag, a study, a spec file): the library names no flags.
 inline constexpr const char* kOverrideMarker = "given as an override ";
+// `message` with every kOverrideMarker replaced by `origin` (e.g. "given on the command line as
+// --set ", "given in spec.yaml: key 'set' as ").
+std::string with_override_origin(std::string message, const std::string& origin);
 QuarterCarFile load_quarter_car(const std::filesystem::path& path,
                                 const std::map<std::string, double>& overrides = {},
                                 const std::string& damper_state = "");

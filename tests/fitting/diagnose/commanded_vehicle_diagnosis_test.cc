@@ -37,7 +37,8 @@ TEST(CommandedVehicleDiagnosis, SwitchingCurrentOnTheRoadNamesCommandDependence)
   truth.damping_per_command_Ns_per_m = 1200.0;
   truth.command_lag_s = 0.012;
   const model::QuarterCar truth_car(model::DamperState::kSlip, truth);
-  const testing::SwitchingCommand first(11, 60.0, 2.0), second(12, 60.0, 2.0);
+  const auto first = testing::switching_command(11, 60.0, 2.0);
+  const auto second = testing::switching_command(12, 60.0, 2.0);
   const DiagnosisData data{
       testing::hidden_effect_record(truth_car, road::Iso8608Class::kB, 51, 60.0, 200.0, 0.005,
                                     [&](double t) { return first(t); }),

@@ -14,7 +14,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/signal/biquad_cascade.h"
-#include "support/white_noise.h"
+#include "ridefit/synthetic/gaussian_noise.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -31,7 +31,7 @@ std::vector<double> resonance(const std::vector<double>& input, double f, double
 
 std::vector<double> noise(unsigned seed, std::size_t n = 60 * 200) {
   std::mt19937_64 rng(seed);
-  return testing::white_noise(n, 1.0, rng);
+  return synthetic::gaussian_noise(n, 1.0, rng);
 }
 
 TEST(DisagreementMap, TwoRealisationsOfOneProcessAgree) {
@@ -195,7 +195,7 @@ TEST(DisagreementMap, TheNoiseFloorKeepsSensorNoiseFromLookingLikeADisagreement)
   auto measured = response;
   std::mt19937_64 rng(41);
   const double sigma = 0.05;
-  const auto sensor = testing::white_noise(measured.size(), sigma, rng);
+  const auto sensor = synthetic::gaussian_noise(measured.size(), sigma, rng);
   for (std::size_t k = 0; k < measured.size(); ++k) measured[k] += sensor[k];
   const double level = 2.0 * sigma * sigma / kRate_Hz;
   auto quiet_bins = [](const DisagreementMap& map) {

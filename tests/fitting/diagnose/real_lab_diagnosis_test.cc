@@ -11,6 +11,8 @@
 #include "ridefit/fitting/diagnose/loop_diagnosis.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/signal/statistics.h"
+#include "ridefit/synthetic/load_cell.h"
+#include "ridefit/synthetic/triangle_history.h"
 #include "support/controlled_damper_record.h"
 #include "support/loop_diagnosis_cases.h"
 #include "support/passat.h"
@@ -29,21 +31,9 @@ double fitted(const DiagnosisResult& r, const std::string& name) {
 }
 
 // A triangle of ±3 mm at 1 mm/s (12 s a cycle), two cycles at 50 Hz.
-double triangle_m(double t) {
-  const double phase = std::fmod(t, 12.0);
-  const double x_mm = phase < 3.0 ? phase : phase < 9.0 ? 6.0 - phase : phase - 12.0;
-  return 1e-3 * x_mm;
-}
-
 HysteresisRecord triangle_record(const model::StrutTestParameters<double>& truth) {
-  HysteresisRecord r;
-  r.source = "triangle";
-  for (int k = 0; k <= 24 * 50; ++k) {
-    r.time_s.push_back(k / 50.0);
-    r.displacement_m.push_back(triangle_m(r.time_s.back()));
-  }
-  r.force_N = simulate::reference_strut_test_force(r.time_s, triangle_m, truth);
-  return r;
+  return testing::cvode_rig_record(truth, synthetic::TriangleHistory(0.003, 0.001), 24.0, 50.0,
+                                   "triangle");
 }
 
 LoopDiagnosisOptions triangle_options() {
@@ -86,8 +76,9 @@ TEST(RealLabDiagnosis, StribeckOnAOneSpeedTriangleIsReportedAsNotIdentifiable) {
 // is named, the fitted law is within 5 % and the held-out NRMSE below 2 %.
 TEST(RealLabDiagnosis, SemiActiveRecordNamesCommandDependenceFromAPassiveBaseline) {
   const auto truth = testing::mr_strut();
-  const auto record = testing::cvode_controlled_record(
-      truth, testing::RandomRigMotion(21), testing::SwitchingCommand(22, 12.0, 2.0), 12.0, 500.0);
+  const auto record =
+      testing::cvode_controlled_record(truth, testing::random_rig_motion(21),
+                                       testing::switching_command(22, 12.0, 2.0), 12.0, 500.0);
   auto passive = truth;
   passive.damping_per_command_Ns_per_m = 0.0;
   passive.coulomb_force_per_command_N = 0.0;
@@ -119,18 +110,10 @@ TEST(RealLabDiagnosis, NamesEachMeasurementChainEffectAndRecoversIt) {
   for (const ChainCase& c : cases) {
     auto truth = passat_strut();
     strut_parameter(truth, strut_parameter_index(c.parameter)) = c.value;
-    const testing::RandomRigMotion motion(31);
-    HysteresisRecord record;
-    record.source = c.id;
-    for (int k = 0; k <= 10 * 500; ++k) {
-      record.time_s.push_back(k / 500.0);
-      record.displacement_m.push_back(motion(record.time_s.back()));
-    }
-    record.force_N = simulate::reference_strut_test_force(
-        record.time_s, [&motion](double t) { return motion(t); }, truth);
+    HysteresisRecord record =
+        testing::cvode_rig_record(truth, testing::random_rig_motion(31), 10.0, 500.0, c.id);
     std::mt19937_64 rng(32);
-    std::normal_distribution<double> noise(0.0, 0.3);
-    for (double& f : record.force_N) f += noise(rng);
+    record.force_N = synthetic::read_load_cell(record.force_N, {0.3, 0.0}, rng);
     // A gain trades against the levels of damping and friction: it can be named only against a
     // strut whose levels are known, with just the load cell's zero free.
     LoopDiagnosisOptions options;
