@@ -7,6 +7,8 @@
 #include <set>
 #include <string>
 
+#include "support/throws_input_error.h"
+
 namespace ridefit::fitting {
 namespace {
 
@@ -21,6 +23,20 @@ TEST(StrutParameters, EveryFitBoxLiesInsideItsRowsRange) {
     EXPECT_TRUE(p.row->contains(p.lower) || (p.lower == 0.0 && p.row->lower == 0.0)) << p.lower;
     EXPECT_EQ(p.in_model_file, model::quarter_car_parameter_index(p.name()).has_value());
   }
+}
+
+TEST(StrutParameters, ValuesByNameAndTheModelFilesShareOfThem) {
+  const model::StrutTestParameters<double> base{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+  const auto p = with_strut_values(base, {{"gas_force_N", 12.0}, {"coulomb_force_N", 50.0}});
+  EXPECT_EQ(p.gas_force_N, 12.0);
+  EXPECT_EQ(p.coulomb_force_N, 50.0);
+  const auto unknown = [&] { with_strut_values(base, {{"gas_rate", 1.0}}); };
+  EXPECT_TRUE(
+      testing::throws_input_error(unknown, "gas_rate: 'gas_rate' is not a strut-test parameter"));
+  // The rig-only gas force is no model key.
+  const auto values = model_file_values(p, {"gas_force_N", "coulomb_force_N", "force_offset_N"});
+  ASSERT_EQ(values.size(), 1u);
+  EXPECT_EQ(values[0], (std::pair<std::string, double>("coulomb_force_N", 50.0)));
 }
 
 }  // namespace

@@ -109,5 +109,21 @@ TEST(ClosestNames, SuggestsTheNearestNamesAndNothingFarAway) {
   EXPECT_EQ(closest_names_text("coulomb_forc_N", names), "; closest: coulomb_force_N");
 }
 
+TEST(FirstRepeatedFile, NamesTheLaterOfTwoNamesForOneFile) {
+  TempDir dir("ridefit_outputs");
+  const std::filesystem::path a = dir.write("a.csv", "x\n");
+  const std::filesystem::path b = dir.write("b.csv", "x\n");
+  EXPECT_FALSE(first_repeated_file({a, b}).has_value());
+  const auto repeated = first_repeated_file({a, b, dir.path() / "." / "a.csv"});
+  ASSERT_TRUE(repeated.has_value());
+  EXPECT_EQ(*repeated, dir.path() / "." / "a.csv");
+}
+
+TEST(OutputForInput, AppendsTheInputsStemInTheOutputsFolder) {
+  EXPECT_EQ(output_for_input("out/fitted.yaml", "data/shim_2mm.csv"),
+            std::filesystem::path("out/fitted_shim_2mm.yaml"));
+  EXPECT_EQ(output_for_input("fitted", "a.csv"), std::filesystem::path("fitted_a"));
+}
+
 }  // namespace
 }  // namespace ridefit::io

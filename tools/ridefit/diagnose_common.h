@@ -1,21 +1,19 @@
 #pragma once
 
-// What `ridefit diagnose` shares between its two kinds of data: the flags, and the parts of the
-// report and of the JSON that do not depend on the kind (diagnose_command.cc).
+// What `ridefit diagnose` shares between its two kinds of data (vehicle spectra in
+// diagnose_command.cc, strut rig loops in diagnose_loops_command.cc): the flags, their checks,
+// and the output folder (diagnose_common.cc).
 
 #include <cmath>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <optional>
-#include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "ridefit/fitting/diagnose/diagnosis.h"
+#include "ridefit/io/gnuplot_figure.h"
 
 namespace ridefit::cli {
-
-namespace dx = fitting::diagnose;
 
 struct DiagnoseFlags {
   std::string model_file;
@@ -39,22 +37,6 @@ struct DiagnoseFlags {
 // --effects: all (empty) or ids separated by commas; InputError naming the library's ids.
 std::vector<std::string> effect_ids(const std::string& text);
 
-std::string se_text(const std::optional<double>& se);
-
-// A markdown table of parameters with their standard errors.
-void write_parameters(std::ostream& out, const std::vector<dx::FittedValue>& values);
-
-// Each round's ranked effects, the skipped and failed ones with why, and the accepted one.
-void write_rounds(std::ostream& out, const dx::DiagnosisResult& r, const std::string& cost_words,
-                  const std::string& gap_unit);
-
-nlohmann::json values_json(const std::vector<dx::FittedValue>& values);
-nlohmann::json rounds_json(const dx::DiagnosisResult& result, const std::string& gap_key);
-
-// RunError when the report's text shows a value that is not a number (nan, inf): a report never
-// presents one as a result. `path` names the report in the message.
-void require_finite_report(const std::string& text, const std::filesystem::path& path);
-
 // The files a diagnosis writes into -o (report.md, model.yaml and, with gnuplot on PATH,
 // `figure`), checked before any work (io::RunOutputs): none is an input (the model, a record,
 // an excitation), and an existing folder holding files ridefit did not write is refused
@@ -62,9 +44,21 @@ void require_finite_report(const std::string& text, const std::filesystem::path&
 // one). InputError naming -o or the record otherwise.
 std::vector<std::string> check_output_folder(const DiagnoseFlags& flags, const std::string& figure);
 
-// True when the CSV's header names a displacement column: a strut rig test (whose loader then
-// names any column it misses).
-bool is_rig_record(const std::filesystem::path& csv_file);
+// What a diagnosis writes into -o: the report (report.md), the model with the values the
+// diagnosis changed (model.yaml, `comment` as its first line) and the figure when gnuplot is
+// there (`files` from check_output_folder: figure_file among them).
+struct DiagnosisFolder {
+  std::string report;
+  std::vector<std::pair<std::string, std::string>> model_values;
+  std::string comment;
+  std::optional<io::Figure> figure;  // none without gnuplot
+  std::string figure_file;
+};
+
+// Writes the folder as a whole (io::StagedFolder): the report is checked first, so a value that
+// is not a number stops the run before any file is written.
+void write_diagnosis_folder(const DiagnoseFlags& flags, const std::vector<std::string>& files,
+                            const DiagnosisFolder& folder);
 
 // The diagnosis of strut rig records (diagnose_loops_command.cc).
 void run_diagnose_loops(const DiagnoseFlags& flags);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/hysteresis_fit.h"
 
 namespace ridefit::fitting {
 
@@ -59,6 +60,19 @@ FrictionCompressionLine fit_friction_compression(std::span<const double> compres
     line.slope_se_N_per_m = std::sqrt(covariance(1, 1));
   }
   return line;
+}
+
+FrictionCompressionLine fit_friction_compression(const HysteresisFitResult& fit,
+                                                 std::span<const double> compression_m) {
+  std::vector<double> friction_N, standard_error_N;
+  for (const auto& p : fit.parameters) {
+    if (p.name != "coulomb_force_N" || p.file.empty()) continue;
+    friction_N.push_back(p.value);
+    if (p.standard_error) standard_error_N.push_back(*p.standard_error);
+  }
+  // Weighted only when every value has its error; one missing would misalign the weights.
+  if (standard_error_N.size() != friction_N.size()) standard_error_N.clear();
+  return fit_friction_compression(compression_m, friction_N, standard_error_N);
 }
 
 }  // namespace ridefit::fitting

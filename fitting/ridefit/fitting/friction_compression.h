@@ -5,6 +5,8 @@
 
 namespace ridefit::fitting {
 
+struct HysteresisFitResult;  // hysteresis_fit.h
+
 // Seed 000's Figure 4: the Coulomb force grows with the spring's compression (the side load on
 // the strut's guide). A straight line Fc = Fc0 + S·compression through per-file fitted friction
 // values, weighted by 1/SE² where the fit gave standard errors (else equally), with the line's
@@ -22,5 +24,11 @@ struct FrictionCompressionLine {
 FrictionCompressionLine fit_friction_compression(std::span<const double> compression_m,
                                                  std::span<const double> coulomb_force_N,
                                                  std::span<const double> standard_error_N = {});
+
+// The line through a hysteresis fit's per-file coulomb_force_N values (in file order) against
+// each file's compression, weighted when the fit gave every value a standard error. InputError
+// as above (also when the fit has no per-file friction values).
+FrictionCompressionLine fit_friction_compression(const HysteresisFitResult& fit,
+                                                 std::span<const double> compression_m);
 
 }  // namespace ridefit::fitting

@@ -87,4 +87,16 @@ std::vector<io::PlotPanel> rig_record_panels(const HysteresisRecord& record,
   return panels;
 }
 
+io::Figure rig_fit_figure(const std::vector<HysteresisRecord>& records,
+                          const std::vector<std::vector<double>>& fitted_force_N) {
+  io::Figure figure;
+  figure.title = "measured and fitted rig force";
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    for (auto& panel : rig_record_panels(records[r], fitted_force_N[r], "fitted")) {
+      figure.panels.push_back(std::move(panel));
+    }
+  }
+  return figure;
+}
+
 }  // namespace ridefit::fitting

@@ -19,4 +19,8 @@ std::vector<io::PlotPanel> rig_record_panels(const HysteresisRecord& record,
                                              const std::vector<double>& model_force_N,
                                              const std::string& model_label);
 
+// The figure of a hysteresis fit: every record's panels against its fitted force.
+io::Figure rig_fit_figure(const std::vector<HysteresisRecord>& records,
+                          const std::vector<std::vector<double>>& fitted_force_N);
+
 }  // namespace ridefit::fitting

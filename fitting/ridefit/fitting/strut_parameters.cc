@@ -16,6 +16,28 @@ std::size_t strut_parameter_index(std::string_view name) {
       fmt::format("'{}' is not a strut-test parameter; the parameters are: {}", name, names));
 }
 
+model::StrutTestParameters<double> with_strut_values(model::StrutTestParameters<double> p,
+                                                     const std::map<std::string, double>& values) {
+  for (const auto& [name, value] : values) {
+    try {
+      strut_parameter(p, strut_parameter_index(name)) = value;
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: {}", name, e.what()));
+    }
+  }
+  return p;
+}
+
+std::vector<std::pair<std::string, double>> model_file_values(
+    const model::StrutTestParameters<double>& p, const std::vector<std::string>& names) {
+  std::vector<std::pair<std::string, double>> values;
+  for (const auto& name : names) {
+    const std::size_t index = strut_parameter_index(name);
+    if (kStrutParameters[index].in_model_file) values.emplace_back(name, strut_parameter(p, index));
+  }
+  return values;
+}
+
 model::StrutTestParameters<double> strut_on_rig(const model::QuarterCarParameters<double>& q) {
   return {q.dahl_sigma0_N_per_m,
           q.coulomb_force_N,

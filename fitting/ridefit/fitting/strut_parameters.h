@@ -1,8 +1,11 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
@@ -59,6 +62,17 @@ model::StrutTestParameters<double> strut_on_rig(const model::QuarterCar& car);
 
 // Index into kStrutParameters; InputError naming the accepted names for an unknown one.
 std::size_t strut_parameter_index(std::string_view name);
+
+// `p` with the parameters named in `values` (kStrutParameters names) set to theirs; InputError
+// "NAME: ..." for a name that is not a strut-test parameter.
+model::StrutTestParameters<double> with_strut_values(model::StrutTestParameters<double> p,
+                                                     const std::map<std::string, double>& values);
+
+// The model-file keys among `names` (kStrutParameters names, in that order) with their values in
+// `p`: what a fitted model file holds. The rig-only parameters (gas force, load-cell offset and
+// chain) are no model keys and are left out.
+std::vector<std::pair<std::string, double>> model_file_values(
+    const model::StrutTestParameters<double>& p, const std::vector<std::string>& names);
 
 // The field of `p` for kStrutParameters[index].
 template <typename T>

@@ -166,4 +166,12 @@ HysteresisFitResult fit_hysteresis_from_starts(
   return *best;
 }
 
+HysteresisFitResult fit_hysteresis_from_file_and_records(
+    const std::vector<HysteresisRecord>& records, const model::StrutTestParameters<double>& start,
+    const HysteresisFitOptions& options, std::string* chosen) {
+  const auto estimated = with_estimates(start, estimate_strut_start(records), options.free);
+  return fit_hysteresis_from_starts(records, {start, estimated}, options,
+                                    {"the model file", "levels read off the records"}, chosen);
+}
+
 }  // namespace ridefit::fitting

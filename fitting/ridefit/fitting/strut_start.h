@@ -35,6 +35,13 @@ HysteresisFitResult fit_hysteresis_from_starts(
     const HysteresisFitOptions& options, const std::vector<std::string>& start_labels = {},
     std::string* chosen = nullptr);
 
+// The two starts of `ridefit fit hysteresis`, the better fit kept: `start` (a model file's
+// values) and the same with the levels read off the records (estimate_strut_start) for the free
+// parameters. `chosen` gets "the model file" or "levels read off the records".
+HysteresisFitResult fit_hysteresis_from_file_and_records(
+    const std::vector<HysteresisRecord>& records, const model::StrutTestParameters<double>& start,
+    const HysteresisFitOptions& options, std::string* chosen = nullptr);
+
 // `base` with the free parameters of `estimate` (those in `free`) set to its values.
 model::StrutTestParameters<double> with_estimates(model::StrutTestParameters<double> base,
                                                   const std::map<std::string, double>& estimate,

@@ -36,4 +36,12 @@ void write_model_with_values(const std::filesystem::path& model_file,
   });
 }
 
+void write_model_with_values(const std::filesystem::path& model_file,
+                             const std::vector<std::pair<std::string, double>>& values,
+                             const std::filesystem::path& output_file, const std::string& comment) {
+  std::vector<std::pair<std::string, std::string>> texts;
+  for (const auto& [key, value] : values) texts.emplace_back(key, YAML::Node(value).Scalar());
+  write_model_with_values(model_file, texts, output_file, comment);
+}
+
 }  // namespace ridefit::io

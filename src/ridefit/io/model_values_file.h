@@ -17,4 +17,10 @@ void write_model_with_values(const std::filesystem::path& model_file,
                              const std::vector<std::pair<std::string, std::string>>& values,
                              const std::filesystem::path& output_file, const std::string& comment);
 
+// The same with numbers, each written as yaml-cpp writes a double (17 significant digits; .nan,
+// .inf), so it reads back as the same value.
+void write_model_with_values(const std::filesystem::path& model_file,
+                             const std::vector<std::pair<std::string, double>>& values,
+                             const std::filesystem::path& output_file, const std::string& comment);
+
 }  // namespace ridefit::io

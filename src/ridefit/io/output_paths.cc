@@ -43,6 +43,20 @@ bool same_file(const fs::path& a, const fs::path& b) {
   return resolved(a) == resolved(b);
 }
 
+std::optional<fs::path> first_repeated_file(const std::vector<fs::path>& files) {
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (same_file(files[i], files[j])) return files[i];
+    }
+  }
+  return std::nullopt;
+}
+
+fs::path output_for_input(const fs::path& output, const fs::path& input) {
+  return output.parent_path() /
+         (output.stem().string() + "_" + input.stem().string() + output.extension().string());
+}
+
 bool is_ridefit_temporary(const std::string& filename) { return temporary_owner(filename) != 0; }
 
 RunOutputs::RunOutputs(std::vector<fs::path> inputs) : inputs_(std::move(inputs)) {}

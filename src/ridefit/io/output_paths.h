@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,16 @@ namespace ridefit::io {
 // True when `a` and `b` name the same file: the same resolved path (symbolic links and `..`
 // followed as far as the path exists), or the same existing file under two names (a hard link).
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// The first of `files` that names the same file (same_file) as an earlier one, if any: an input
+// given twice.
+std::optional<std::filesystem::path> first_repeated_file(
+    const std::vector<std::filesystem::path>& files);
+
+// The output for one of several inputs: `output`'s name with the input's stem appended, in
+// `output`'s folder ("out/fitted.yaml" and "shim_2mm.csv" give "out/fitted_shim_2mm.yaml").
+std::filesystem::path output_for_input(const std::filesystem::path& output,
+                                       const std::filesystem::path& input);
 
 // The name of the file a folder output keeps the list of the files ridefit wrote into it.
 inline constexpr const char* kOutputManifest = ".ridefit-outputs";

@@ -1,0 +1,88 @@
+#include "ridefit/fitting/diagnose/diagnosis_report.h"
+
+#include <fmt/core.h>
+
+#include <optional>
+
+#include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/fitting/fit_json.h"
+
+namespace ridefit::fitting::diagnose {
+
+void write_parameters(std::ostream& out, const std::vector<FittedValue>& values) {
+  out << "| parameter | value | standard error |\n| --- | --- | --- |\n";
+  for (const auto& p : values) {
+    out << fmt::format(
+        "| {} | {:.6g} | {} |\n", p.name, p.value,
+        p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : std::string("—"));
+  }
+  out << "\n";
+}
+
+void write_rounds(std::ostream& out, const DiagnosisResult& result, const std::string& cost_words,
+                  const std::string& gap_unit) {
+  for (std::size_t k = 0; k < result.rounds.size(); ++k) {
+    const DiagnosisRound& round = result.rounds[k];
+    out << fmt::format("## Round {}: effects tried\n\n", k + 1);
+    out << fmt::format(
+        "Held-out improvement: how much the held-out cost ({}) falls; ΔBIC on the training data "
+        "(negative is better; extra parameters pay ln n each).\n\n| rank | effect | free | "
+        "held-out improvement | ΔBIC | gap [{}] | significant |\n| --- | --- | --- | --- | --- | "
+        "--- | --- |\n",
+        cost_words, gap_unit);
+    int rank = 0;
+    for (const auto& t : round.trials) {
+      if (!t.skipped.empty() || !t.failed.empty()) continue;
+      out << fmt::format("| {} | `{}` | {} | {:+.1f} % | {:+.1f} | {:.2f} | {} |\n", ++rank, t.id,
+                         t.free_parameters, 100.0 * t.held_out_improvement, t.bic_change,
+                         t.held_out_gap, t.significant ? "yes" : "no");
+    }
+    out << "\n";
+    for (const auto& t : round.trials) {
+      if (!t.failed.empty()) out << fmt::format("- `{}` failed: {}\n", t.id, t.failed);
+      if (!t.skipped.empty()) out << fmt::format("- `{}` skipped: {}\n", t.id, t.skipped);
+    }
+    out << "\n"
+        << (round.accepted.empty() ? std::string("No effect is significant.")
+                                   : fmt::format("Accepted: `{}` — {}.", round.accepted,
+                                                 find_effect(round.accepted).description()))
+        << "\n\n";
+  }
+}
+
+nlohmann::json values_json(const std::vector<FittedValue>& values) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& v : values) {
+    j.push_back({{"name", v.name},
+                 {"value", v.value},
+                 {"standard_error", number_or_null(v.standard_error)}});
+  }
+  return j;
+}
+
+nlohmann::json rounds_json(const DiagnosisResult& result, const std::string& gap_key) {
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const auto& round : result.rounds) {
+    nlohmann::json ranked = nlohmann::json::array();
+    for (const auto& t : round.trials) {
+      nlohmann::json e = {{"id", t.id}};
+      if (!t.skipped.empty()) {
+        e["skipped"] = t.skipped;
+      } else if (!t.failed.empty()) {
+        e["failed"] = t.failed;
+      } else {
+        e["held_out_improvement"] = t.held_out_improvement;
+        e["bic_change"] = t.bic_change;
+        e["held_out_cost"] = t.held_out_cost;
+        e[gap_key] = t.held_out_gap;
+        e["significant"] = t.significant;
+        e["parameters"] = values_json(t.parameters);
+      }
+      ranked.push_back(e);
+    }
+    rounds.push_back({{"accepted", round.accepted}, {"effects", ranked}});
+  }
+  return rounds;
+}
+
+}  // namespace ridefit::fitting::diagnose

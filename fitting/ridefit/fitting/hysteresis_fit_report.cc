@@ -1,0 +1,102 @@
+#include "ridefit/fitting/hysteresis_fit_report.h"
+
+#include <fmt/core.h>
+
+#include <utility>
+
+#include "ridefit/common/errors.h"
+#include "ridefit/fitting/fit_json.h"
+
+namespace ridefit::fitting {
+
+HysteresisFitReport report_hysteresis_fit(const std::vector<HysteresisRecord>& records,
+                                          const HysteresisFitResult& fit, std::string start,
+                                          std::span<const double> compression_m) {
+  HysteresisFitReport report;
+  report.start = std::move(start);
+  for (const auto& r : records) {
+    report.sources.push_back(r.source);
+    try {
+      report.calibration.push_back(signal::hysteresis_friction(r.displacement_m, r.force_N));
+    } catch (const InputError&) {
+      report.calibration.push_back(std::nullopt);  // fewer than 2 cycles through zero: no value
+    }
+  }
+  if (!compression_m.empty()) report.friction_line = fit_friction_compression(fit, compression_m);
+  return report;
+}
+
+void write_summary(std::ostream& out, const HysteresisFitResult& fit,
+                   const HysteresisFitReport& report) {
+  out << fmt::format(
+      "fit of {} file(s) from {}: {} iterations, residual RMS {:.4g} N, NRMSE {:.2f} % ({})\n",
+      report.sources.size(), report.start, fit.iterations, fit.residual_rms_N, fit.nrmse_percent,
+      fit.explains_data ? fit.termination : "the model does not explain the data");
+  for (const auto& p : fit.parameters) {
+    out << fmt::format("  {:<30} {:>14.6g}  ± {:<12}{}\n", p.name, p.value,
+                       p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : "-",
+                       p.file.empty() ? "" : "  " + p.file);
+  }
+  for (std::size_t r = 0; r < report.sources.size(); ++r) {
+    const auto& calibration = report.calibration[r];
+    if (!calibration) continue;
+    out << fmt::format(
+        "  seed calibration (half the loop height at x = 0, cycles 2-{}): {:.4g}{} N  {}\n",
+        calibration->cycles_used + 1, calibration->mean_N,
+        calibration->cycles_used > 1 ? fmt::format(" ± {:.2g}", calibration->standard_deviation_N)
+                                     : std::string(" (one cycle)"),
+        report.sources[r]);
+  }
+  if (const auto& line = report.friction_line) {
+    out << fmt::format(
+        "  Fc = {:.4g} N + {:.4g} N/mm · compression (slope ± {} N/mm)\n", line->intercept_N,
+        1e-3 * line->slope_N_per_m,
+        line->slope_se_N_per_m ? fmt::format("{:.2g}", 1e-3 * *line->slope_se_N_per_m) : "-");
+  }
+  if (!fit.identifiability_note.empty()) out << "warning: " << fit.identifiability_note << "\n";
+  for (const auto& bound : fit.on_bounds) out << "  on a bound: " << bound << "\n";
+}
+
+nlohmann::json summary_json(const HysteresisFitResult& fit, const HysteresisFitReport& report) {
+  nlohmann::json j = {{"converged", fit.converged},
+                      {"termination", fit.termination},
+                      {"iterations", fit.iterations},
+                      {"initial_cost", fit.initial_cost},
+                      {"final_cost", fit.final_cost},
+                      {"residual_rms_N", fit.residual_rms_N},
+                      {"nrmse_percent", fit.nrmse_percent},
+                      {"explains_data", fit.explains_data},
+                      {"adequacy_note", fit.adequacy_note},
+                      {"on_bounds", fit.on_bounds},
+                      {"start", report.start},
+                      {"unidentifiable", fit.unidentifiable},
+                      {"identifiability_note", fit.identifiability_note},
+                      {"parameters", nlohmann::json::array()},
+                      {"correlation", correlation_json(fit.correlation)},
+                      {"calibration_friction_N", nlohmann::json::array()}};
+  for (const auto& p : fit.parameters) {
+    j["parameters"].push_back({{"name", p.name},
+                               {"file", p.file},
+                               {"value", p.value},
+                               {"standard_error", number_or_null(p.standard_error)}});
+  }
+  for (std::size_t r = 0; r < report.sources.size(); ++r) {
+    const auto& calibration = report.calibration[r];
+    j["calibration_friction_N"].push_back(
+        calibration ? nlohmann::json{{"file", report.sources[r]},
+                                     {"mean", calibration->mean_N},
+                                     {"standard_deviation", calibration->standard_deviation_N},
+                                     {"cycles", calibration->cycles_used}}
+                    : nlohmann::json{{"file", report.sources[r]}, {"mean", nullptr}});
+  }
+  if (const auto& line = report.friction_line) {
+    j["friction_against_compression"] = {
+        {"intercept_N", line->intercept_N},
+        {"slope_N_per_m", line->slope_N_per_m},
+        {"intercept_se_N", number_or_null(line->intercept_se_N)},
+        {"slope_se_N_per_m", number_or_null(line->slope_se_N_per_m)}};
+  }
+  return j;
+}
+
+}  // namespace ridefit::fitting

@@ -1,0 +1,12 @@
+#pragma once
+
+#include <filesystem>
+
+namespace ridefit::fitting {
+
+// True when the CSV's header names a displacement column: a strut rig test (hysteresis_record.h,
+// whose loader then names any column it misses), not a vehicle measurement (psd_fit.h). Decides
+// which diagnosis a record gets.
+bool is_rig_record(const std::filesystem::path& csv_file);
+
+}  // namespace ridefit::fitting

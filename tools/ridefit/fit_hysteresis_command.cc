@@ -1,0 +1,247 @@
+// ridefit fit hysteresis DATA.csv... --model M.yaml --free a,b,... [--per-file c]
+//                       [--bounds name=lo:hi]... [--start name=value]... [--loss huber|cauchy]
+//                       [--compression mm,...] [-o fitted.yaml] [--plot FILE.png|svg] [--json]
+// Fits the strut's parameters to rig tests (fitting/hysteresis_fit.h), writes the fitted model
+// file(s) and reports the fit (fitting/hysteresis_fit_report.h).
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "command_options.h"
+#include "fit_command.h"
+#include "ridefit/common/errors.h"
+#include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/fitting/hysteresis_fit_report.h"
+#include "ridefit/fitting/rig_figure.h"
+#include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/fitting/strut_start.h"
+#include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
+#include "ridefit/io/quarter_car_file.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct FitHysteresisFlags {
+  std::vector<std::string> files;
+  std::string model_file;
+  std::vector<std::string> free;
+  std::vector<std::string> per_file;
+  std::vector<std::string> bounds;
+  std::vector<std::string> starts;
+  std::string loss = "none";
+  double loss_scale_N = 5.0;
+  double relative_tolerance = 1e-6;
+  std::string interpolation = "spline";
+  int max_iterations = 100;
+  std::vector<double> compression_mm;
+  std::string output_file;
+  std::string plot_file;
+  double max_nrmse_percent = 10.0;
+  bool keep = false;
+  bool json = false;
+};
+
+// The model file's strut on the rig with the --start values.
+model::StrutTestParameters<double> start_from(const io::QuarterCarFile& file,
+                                              const std::vector<std::string>& starts) {
+  const std::map<std::string, double> values = parse_overrides(starts);
+  try {
+    return fitting::with_strut_values(fitting::strut_on_rig(file.parameters), values);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("--start {}", e.what()));
+  }
+}
+
+std::map<std::string, std::pair<double, double>> parse_bounds(
+    const std::vector<std::string>& entries) {
+  std::map<std::string, std::pair<double, double>> bounds;
+  for (const auto& [name, text] : parse_key_values(entries)) {
+    const auto colon = text.find(':');
+    char* end = nullptr;
+    const std::string lo_text = text.substr(0, colon);
+    const std::string hi_text = colon == std::string::npos ? "" : text.substr(colon + 1);
+    const double lo = std::strtod(lo_text.c_str(), &end);
+    const bool lo_ok = end != lo_text.c_str() && *end == '\0';
+    const double hi = std::strtod(hi_text.c_str(), &end);
+    const bool hi_ok = end != hi_text.c_str() && *end == '\0';
+    if (colon == std::string::npos || !lo_ok || !hi_ok) {
+      throw InputError(fmt::format(
+          "--bounds {}={}: expected NAME=LOWER:UPPER, e.g. coulomb_force_N=10:200", name, text));
+    }
+    fitting::strut_parameter_index(name);
+    bounds[name] = {lo, hi};
+  }
+  return bounds;
+}
+
+// Flags that only make sense together, checked before the fit: a bound only acts on a fitted
+// parameter (one on a fixed parameter would be ignored), and the friction-compression line
+// needs a friction value per file.
+void check_flag_combinations(const FitHysteresisFlags& flags,
+                             const fitting::HysteresisFitOptions& options) {
+  const auto fitted = [&](const std::string& name) {
+    return std::ranges::count(flags.free, name) + std::ranges::count(flags.per_file, name) > 0;
+  };
+  for (const auto& [name, bound] : options.bounds) {
+    if (fitted(name)) continue;
+    throw InputError(fmt::format(
+        "--bounds {}={}:{}: {} is not fitted (--free {}), so the bound would be ignored; add it "
+        "to --free or leave the bound out",
+        name, bound.first, bound.second, name, fmt::join(flags.free, ",")));
+  }
+  if (!flags.compression_mm.empty() &&
+      (flags.compression_mm.size() != flags.files.size() ||
+       std::ranges::count(flags.per_file, "coulomb_force_N") == 0)) {
+    throw InputError(
+        fmt::format("--compression: give one spring compression per file ({} files) and fit "
+                    "coulomb_force_N per file (--per-file coulomb_force_N)",
+                    flags.files.size()));
+  }
+}
+
+void run(const FitHysteresisFlags& flags) {
+  if (const auto repeated = io::first_repeated_file({flags.files.begin(), flags.files.end()})) {
+    throw InputError(fmt::format(
+        "{} is given twice; a repeated record would count twice in the fit", repeated->string()));
+  }
+  std::vector<std::filesystem::path> inputs(flags.files.begin(), flags.files.end());
+  inputs.push_back(flags.model_file);
+  // With per-file parameters and several files, one model per file: -o's stem + the file's.
+  std::vector<std::string> model_outputs;
+  if (!flags.output_file.empty()) {
+    if (flags.files.size() == 1 || flags.per_file.empty()) {
+      model_outputs.push_back(flags.output_file);
+    } else {
+      for (const auto& file : flags.files) {
+        model_outputs.push_back(io::output_for_input(flags.output_file, file).string());
+      }
+    }
+  }
+  io::RunOutputs outputs(inputs);
+  for (const auto& path : model_outputs) {
+    outputs.add_file(path, path == flags.output_file ? "-o" : "-o (a per-file model)");
+  }
+  outputs.add_plot(flags.plot_file, "--plot");
+  const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
+  std::vector<fitting::HysteresisRecord> records;
+  for (const auto& file : flags.files) records.push_back(fitting::load_hysteresis_record(file));
+  fitting::HysteresisFitOptions options;
+  options.free = flags.free;
+  options.per_file = flags.per_file;
+  options.bounds = parse_bounds(flags.bounds);
+  options.loss = fitting::parse_robust_loss(flags.loss);
+  options.loss_scale_N = flags.loss_scale_N;
+  options.solver.relative_tolerance = flags.relative_tolerance;
+  options.solver.interpolation = flags.interpolation == "linear"
+                                     ? simulate::RigInterpolation::kLinear
+                                     : simulate::RigInterpolation::kSpline;
+  options.max_iterations = flags.max_iterations;
+  options.max_nrmse_percent = flags.max_nrmse_percent;
+  check_flag_combinations(flags, options);
+  // From the model file's values (with --start) and from levels read off the records.
+  std::string chosen;
+  const fitting::HysteresisFitResult fit = fitting::fit_hysteresis_from_file_and_records(
+      records, start_from(model_file, flags.starts), options, &chosen);
+  if (!fit.converged && fit.explains_data) {
+    throw RunError(fmt::format(
+        "the fit did not converge after {} iterations ({}); no fitted model was written. Try "
+        "better start values (--start) or fewer free parameters",
+        fit.iterations, fit.termination));
+  }
+  std::vector<double> compression_m;
+  for (double mm : flags.compression_mm) compression_m.push_back(1e-3 * mm);
+  const fitting::HysteresisFitReport report =
+      fitting::report_hysteresis_fit(records, fit, chosen, compression_m);
+  std::vector<std::string> written;
+  if (fit.explains_data || flags.keep) {
+    // Each file has its own values of the per-file parameters: one model per file.
+    for (std::size_t r = 0; r < model_outputs.size(); ++r) {
+      io::write_model_with_values(
+          flags.model_file, fitting::model_file_values(fit.fitted[r], flags.free), model_outputs[r],
+          "Fitted by ridefit fit hysteresis from " + flags.model_file);
+      written.push_back(model_outputs[r]);
+    }
+  }
+  if (!flags.plot_file.empty()) {
+    io::draw_figure(fitting::rig_fit_figure(records, fit.fitted_force_N), flags.plot_file);
+  }
+  if (flags.json) {
+    nlohmann::json j = fitting::summary_json(fit, report);
+    j["written"] = written;
+    std::cout << j.dump(2) << "\n";
+  } else {
+    fitting::write_summary(std::cout, fit, report);
+    for (const auto& path : written) std::cout << "Fitted model: " << path << "\n";
+    if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
+  }
+  require_explained(fit.explains_data, fit.adequacy_note,
+                    !flags.json && !flags.output_file.empty() && !flags.keep);
+}
+
+}  // namespace
+
+void register_fit_hysteresis(CLI::App& fit) {
+  auto flags = std::make_shared<FitHysteresisFlags>();
+  CLI::App* command = fit.add_subcommand(
+      "hysteresis",
+      "Fit Dahl friction, top mount and damping to strut rig tests (CSV: time, displacement, "
+      "force)");
+  command->add_option("files", flags->files, "Rig tests (CSV); fitted together")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--model", flags->model_file, "Quarter-car model file: start values")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--free", flags->free,
+                   "Parameters to fit, e.g. dahl_sigma0_N_per_m,coulomb_force_N")
+      ->required()
+      ->delimiter(',');
+  command
+      ->add_option("--per-file", flags->per_file,
+                   "Free parameters each file gets its own value of (e.g. coulomb_force_N)")
+      ->delimiter(',');
+  command->add_option("--bounds", flags->bounds, "NAME=LOWER:UPPER (repeatable)");
+  command->add_option("--start", flags->starts,
+                      "NAME=VALUE start for a parameter not in the model file (gas_force_N, "
+                      "gas_stiffness_N_per_m, force_offset_N; stribeck_velocity_m_per_s and "
+                      "static_friction_force_N when the file has no Stribeck curve) or to "
+                      "override one");
+  command->add_option("--loss", flags->loss, "Robust loss: none, huber, cauchy")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
+      ->capture_default_str();
+  command->add_option("--loss-scale", flags->loss_scale_N, "Residual [N] where the loss bends")
+      ->check(positive_number("N"))
+      ->capture_default_str();
+  add_tolerance_option(*command, "--rtol", flags->relative_tolerance,
+                       "Relative tolerance of the strut's adaptive ESDIRK integration");
+  command
+      ->add_option("--interpolation", flags->interpolation,
+                   "The displacement between samples: spline (C2, for smooth motions) or linear "
+                   "(for piecewise-linear commands such as triangle waves)")
+      ->check(CLI::IsMember({"spline", "linear"}))
+      ->capture_default_str();
+  command->add_option("--max-iterations", flags->max_iterations, "Solver iterations at most")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  command
+      ->add_option("--compression", flags->compression_mm,
+                   "Spring compression [mm] per file: fits Fc against it (seed 000 Figure 4; "
+                   "needs --per-file coulomb_force_N)")
+      ->delimiter(',');
+  command->add_option("-o,--output", flags->output_file, "Fitted model (YAML, the input's schema)");
+  command->add_option("--plot", flags->plot_file,
+                      "Measured and fitted force (.png or .svg): loops for periodic tests; force "
+                      "over velocity, a time excerpt and the residual's spectrum for random ones");
+  add_verdict_options(*command, "NRMSE", flags->max_nrmse_percent, flags->keep);
+  command->add_flag("--json", flags->json,
+                    "Values, standard errors, correlation, cost, iterations");
+  command->callback([flags] { run(*flags); });
+}
+
+}  // namespace ridefit::cli

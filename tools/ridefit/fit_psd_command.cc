@@ -1,0 +1,163 @@
+// ridefit fit psd MEAS.csv --model M.yaml --free a,b [--excitation EXC.yaml] [--band LO,HI]
+//                 [--segment S] [--starts N] [-o fitted.yaml] [--plot FILE.png|svg] [--json]
+// Fits quarter-car parameters to measured acceleration spectra (fitting/psd_fit.h), writes the
+// fitted model file and reports the fit and its adequacy (fitting/psd_fit_report.h).
+#include <fmt/core.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "command_options.h"
+#include "fit_command.h"
+#include "ridefit/common/errors.h"
+#include "ridefit/fitting/fit_adequacy.h"
+#include "ridefit/fitting/psd_fit.h"
+#include "ridefit/fitting/psd_fit_report.h"
+#include "ridefit/io/gnuplot_figure.h"
+#include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
+#include "ridefit/io/quarter_car_file.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct FitPsdFlags {
+  std::string file;
+  std::string excitation_file;
+  std::string model_file;
+  std::vector<std::string> free;
+  std::vector<double> band_Hz = {0.5, 30.0};
+  double segment_s = 10.0;
+  int starts = 1;
+  int max_iterations = 50;
+  std::string loss = "none";
+  double relative_tolerance = 1e-4;
+  double body_noise_psd = std::nan("");  // not given: estimated
+  double wheel_noise_psd = std::nan("");
+  std::string output_file;
+  std::string plot_file;
+  double max_nrmse_percent = 10.0;
+  bool keep = false;
+  bool json = false;
+};
+
+// The measured and fitted PSD of each channel the record has.
+io::Figure figure_of(const fitting::PsdFitResult& fit) {
+  io::Figure figure;
+  figure.title = "measured and fitted acceleration PSDs";
+  auto panel_of = [&](const char* name, const std::vector<double>& measured,
+                      const std::vector<double>& fitted) {
+    if (measured.empty()) return;
+    io::PlotPanel panel = io::psd_panel(name, "PSD [(m/s^2)^2/Hz]");
+    panel.series.push_back(
+        {"measured", fit.frequency_Hz, measured, {}, {}, io::SeriesStyle::kLines});
+    panel.series.push_back({"fitted", fit.frequency_Hz, fitted, {}, {}, io::SeriesStyle::kLines});
+    figure.panels.push_back(std::move(panel));
+  };
+  panel_of("body_acc", fit.measured_body_psd, fit.fitted_body_psd);
+  panel_of("wheel_acc", fit.measured_wheel_psd, fit.fitted_wheel_psd);
+  return figure;
+}
+
+void run(const FitPsdFlags& flags) {
+  std::vector<std::filesystem::path> inputs = {flags.file, flags.model_file};
+  if (!flags.excitation_file.empty()) inputs.push_back(flags.excitation_file);
+  io::RunOutputs outputs(inputs);
+  outputs.add_file(flags.output_file, "-o");
+  outputs.add_plot(flags.plot_file, "--plot");
+  if (flags.band_Hz.size() != 2 || !(flags.band_Hz[0] < flags.band_Hz[1])) {
+    throw InputError("--band: expected LOW,HIGH in Hz with LOW < HIGH, e.g. 0.5,30");
+  }
+  const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
+  const fitting::PsdMeasurement measurement =
+      fitting::load_psd_measurement(flags.file, flags.excitation_file);
+  fitting::PsdFitOptions options;
+  options.free = flags.free;
+  options.band_low_Hz = flags.band_Hz[0];
+  options.band_high_Hz = flags.band_Hz[1];
+  options.segment_s = flags.segment_s;
+  options.starts = flags.starts;
+  options.max_iterations = flags.max_iterations;
+  options.loss = fitting::parse_robust_loss(flags.loss);
+  options.relative_tolerance = flags.relative_tolerance;
+  options.body_noise_psd = noise_psd_of(flags.body_noise_psd);
+  options.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
+  const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
+  const fitting::FitAdequacy adequacy =
+      fitting::assess_psd_fit(fit, model_file.parameters, options, flags.max_nrmse_percent);
+  if (!fit.converged && adequacy.explains_data) {
+    throw RunError(fmt::format(
+        "the PSD fit did not converge after {} iterations ({}); no fitted model was written. Try "
+        "--starts 5 or fewer free parameters",
+        fit.iterations, fit.termination));
+  }
+  const bool written = !flags.output_file.empty() && (adequacy.explains_data || flags.keep);
+  if (written) {
+    std::vector<std::pair<std::string, double>> values;
+    for (std::size_t i = 0; i < fit.names.size(); ++i)
+      values.emplace_back(fit.names[i], fit.values[i]);
+    io::write_model_with_values(
+        flags.model_file, values, flags.output_file,
+        fmt::format("Fitted by ridefit fit psd from {} and {}", flags.model_file, flags.file));
+  }
+  if (!flags.plot_file.empty()) io::draw_figure(figure_of(fit), flags.plot_file);
+  if (flags.json) {
+    std::cout << fitting::summary_json(fit, adequacy).dump(2) << "\n";
+  } else {
+    fitting::write_summary(std::cout, flags.file, fit, adequacy);
+    if (written) std::cout << "Fitted model: " << flags.output_file << "\n";
+    if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
+  }
+  require_explained(adequacy.explains_data, adequacy.note,
+                    !flags.json && !flags.output_file.empty() && !flags.keep);
+}
+
+}  // namespace
+
+void register_fit_psd(CLI::App& fit) {
+  auto psd = std::make_shared<FitPsdFlags>();
+  CLI::App* command = fit.add_subcommand(
+      "psd",
+      "Fit quarter-car parameters (e.g. the top-mount stiffness) to measured body and wheel "
+      "acceleration spectra (CSV: time, road, body_acc and/or wheel_acc)");
+  command->add_option("file", psd->file, "Measurement (CSV)")->required()->check(CLI::ExistingFile);
+  command->add_option("--model", psd->model_file, "Quarter-car model file: start values")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--excitation", psd->excitation_file,
+                   "The road as a known excitation file instead of a road column")
+      ->check(CLI::ExistingFile);
+  command->add_option("--free", psd->free, "Parameters to fit (1 to 4 model keys)")
+      ->required()
+      ->delimiter(',');
+  command->add_option("--band", psd->band_Hz, "Fitted band LOW,HIGH [Hz]")
+      ->delimiter(',')
+      ->capture_default_str();
+  command->add_option("--segment", psd->segment_s, "Welch segment length [s]")
+      ->check(positive_number("s"))
+      ->capture_default_str();
+  command->add_option("--starts", psd->starts, "Multi-start: number of starting points")
+      ->check(CLI::Range(1, 50))
+      ->capture_default_str();
+  command
+      ->add_option("--loss", psd->loss, "Robust loss on the log-PSD residuals: none, huber, cauchy")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
+      ->capture_default_str();
+  command->add_option("--max-iterations", psd->max_iterations, "Solver iterations at most")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  add_tolerance_option(*command, "--rtol", psd->relative_tolerance,
+                       "Relative tolerance of the quarter car's adaptive ESDIRK integration");
+  add_noise_psd_option(*command, "body", psd->body_noise_psd);
+  add_noise_psd_option(*command, "wheel", psd->wheel_noise_psd);
+  command->add_option("-o,--output", psd->output_file, "Fitted model (YAML, the input's schema)");
+  command->add_option("--plot", psd->plot_file, "Measured and fitted PSDs (.png or .svg)");
+  add_verdict_options(*command, "Amplitude-spectrum NRMSE", psd->max_nrmse_percent, psd->keep);
+  command->add_flag("--json", psd->json, "Values, standard errors, cost, iterations");
+  command->callback([psd] { run(*psd); });
+}
+
+}  // namespace ridefit::cli
