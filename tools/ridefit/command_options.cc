@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "ridefit/common/errors.h"
+#include "ridefit/simulate/simulation_options.h"
 
 namespace ridefit::cli {
 
@@ -119,21 +120,11 @@ simulate::IntegratorOptions SolverFlags::options() const {
   return options;
 }
 
-void check_output_rate(double rate_Hz, double duration_s, const SolverFlags& solver) {
-  // (rk4 with a step longer than the output interval is refused by the integrator.)
-  (void)solver;
-  if (rate_Hz > kMaxOutputRate_Hz) {
-    throw InputError(fmt::format(
-        "--rate {:g} Hz: output samples more than {:g} per second resolve nothing the solvers "
-        "compute for a vehicle; give a rate up to {:g} Hz",
-        rate_Hz, kMaxOutputRate_Hz, kMaxOutputRate_Hz));
-  }
-  const double samples = std::floor(duration_s * rate_Hz + 1e-9) + 1.0;
-  if (samples < 2.0) {
-    throw InputError(fmt::format(
-        "--rate {:g} Hz over {:g} s gives {:g} output sample; give at least two: a rate of at "
-        "least {:g} Hz or a longer duration",
-        rate_Hz, duration_s, samples, 1.0 / duration_s));
+void check_output_rate(double rate_Hz, double duration_s) {
+  try {
+    simulate::check_output_rate(rate_Hz, duration_s);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("--rate {}", e.what()));
   }
 }
 
@@ -184,16 +175,6 @@ io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
   } catch (const InputError& e) {
     throw InputError(with_override_origin(e.what(), "given on the command line as --set "));
   }
-}
-
-nlohmann::json to_json(const simulate::SolverStatistics& statistics) {
-  return {{"method", statistics.method},
-          {"steps", statistics.steps},
-          {"rhs_evaluations", statistics.rhs_evaluations},
-          {"jacobian_evaluations", statistics.jacobian_evaluations},
-          {"error_test_failures", statistics.error_test_failures},
-          {"nonlinear_convergence_failures", statistics.nonlinear_convergence_failures},
-          {"events", statistics.events}};
 }
 
 }  // namespace ridefit::cli

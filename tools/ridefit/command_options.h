@@ -57,11 +57,8 @@ class ProgressReporter {
   bool tty_;
 };
 
-// The output sample rate of a simulation against what it can give: at least two samples over
-// `duration_s`, and no rate above kMaxOutputRate_Hz. InputError naming --rate. (rk4 with a
-// step longer than the output interval is refused by the integrator itself.)
-inline constexpr double kMaxOutputRate_Hz = 1e5;
-void check_output_rate(double rate_Hz, double duration_s, const SolverFlags& solver);
+// simulate::check_output_rate with its InputError naming --rate.
+void check_output_rate(double rate_Hz, double duration_s);
 
 // `--set key=value` entries as (key, value text); a malformed entry is an InputError.
 std::vector<std::pair<std::string, std::string>> parse_key_values(
@@ -80,7 +77,5 @@ io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
 
 // `message` with every io::kOverrideMarker replaced by `origin` (io/quarter_car_file.h).
 using io::with_override_origin;
-
-nlohmann::json to_json(const simulate::SolverStatistics& statistics);
 
 }  // namespace ridefit::cli

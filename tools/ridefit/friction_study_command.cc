@@ -20,6 +20,7 @@
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/staged_folder.h"
 #include "ridefit/road/excitation_file.h"
+#include "ridefit/simulate/solver_statistics_json.h"
 #include "ridefit/study/friction_study.h"
 #include "subcommands.h"
 
@@ -88,7 +89,7 @@ void run(const FrictionStudyFlags& flags) {
   for (const auto& excitation_file : flags.excitation_files) outputs.add_input(excitation_file);
   for (const auto& excitation_file : flags.excitation_files) {
     roads.push_back(road::load_excitation(excitation_file));
-    check_output_rate(flags.output_rate_Hz, roads.back()->duration_s(), flags.solver);
+    check_output_rate(flags.output_rate_Hz, roads.back()->duration_s());
     const std::string stem = std::filesystem::path(excitation_file).stem().string();
     if (!stems.insert(stem).second) {
       throw InputError(
@@ -151,7 +152,7 @@ void run(const FrictionStudyFlags& flags) {
            {"body_slip_band_rms_m_per_s2", c.body_slip_band_rms_m_per_s2},
            {"body_stick_band_rms_m_per_s2", c.body_stick_band_rms_m_per_s2},
            {"stuck_share", c.stuck_share},
-           {"solver", to_json(c.statistics)}});
+           {"solver", simulate::to_json(c.statistics)}});
       if (!flags.json) {
         std::cout << fmt::format(
             "{:>7g} {:>11.2f} {:>12.2f} {:>9.4f} {:>9} {:>9.4f} {:>12.4f} {:>12.4f} {:>8.1f}\n",

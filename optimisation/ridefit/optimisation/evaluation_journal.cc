@@ -17,6 +17,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/path_type.h"
+#include "ridefit/optimisation/tuning_files.h"
 
 namespace ridefit::optimisation {
 namespace {
@@ -288,10 +289,7 @@ std::string study_fingerprint(const TuningStudy& study) {
       hash *= 1099511628211ULL;
     }
   };
-  add(study.study_file);
-  add(study.model_file);
-  if (!study.fitted_model.empty()) add(study.fitted_model);
-  for (const auto& c : study.load_cases) add(c.road_file);
+  for (const auto& path : study_inputs(study)) add(path);
   return fmt::format("{:016x}", hash);
 }
 

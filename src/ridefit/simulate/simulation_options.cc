@@ -40,4 +40,20 @@ std::vector<double> output_times(const SimulationOptions& options, double road_d
   return times;
 }
 
+void check_output_rate(double rate_Hz, double duration_s) {
+  if (rate_Hz > kMaxOutputRate_Hz) {
+    throw InputError(
+        fmt::format("{:g} Hz: output samples more than {:g} per second resolve nothing the solvers "
+                    "compute for a vehicle; give a rate up to {:g} Hz",
+                    rate_Hz, kMaxOutputRate_Hz, kMaxOutputRate_Hz));
+  }
+  const double samples = std::floor(duration_s * rate_Hz + 1e-9) + 1.0;
+  if (samples < 2.0) {
+    throw InputError(
+        fmt::format("{:g} Hz over {:g} s gives {:g} output sample; give at least two: a rate of at "
+                    "least {:g} Hz or a longer duration",
+                    rate_Hz, duration_s, samples, 1.0 / duration_s));
+  }
+}
+
 }  // namespace ridefit::simulate

@@ -20,4 +20,13 @@ constexpr double kMaxOutputSamples = 2e7;
 // than the road (`road_duration_s`), or more than kMaxOutputSamples samples.
 std::vector<double> output_times(const SimulationOptions& options, double road_duration_s);
 
+// Output samples faster than this resolve nothing the solvers compute for a vehicle.
+inline constexpr double kMaxOutputRate_Hz = 1e5;
+
+// An output rate against what a run of `duration_s` can give: at most kMaxOutputRate_Hz, and at
+// least two samples. InputError whose message begins with the rate ("200000 Hz: ..."), so a
+// caller can name where it came from. (rk4 with a step longer than the output interval is
+// refused by the integrator itself.)
+void check_output_rate(double rate_Hz, double duration_s);
+
 }  // namespace ridefit::simulate

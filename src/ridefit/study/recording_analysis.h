@@ -138,4 +138,12 @@ struct LevelCorrelation {
 std::vector<LevelCorrelation> correlate_with_levels(const RecordingAnalysis& analysis,
                                                     std::span<const double> levels);
 
+// Recordings taken at levels of one parameter and what correlates with it: what a level study's
+// outputs (report, JSON, figure, PSD table) show beside the analysis.
+struct ParameterLevels {
+  std::string parameter;                       // names CSV columns and axes, e.g. coulomb_force_N
+  std::vector<double> values;                  // one per recording, in their order
+  std::vector<LevelCorrelation> correlations;  // correlate_with_levels(analysis, values)
+};
+
 }  // namespace ridefit::study
