@@ -13,11 +13,8 @@
 namespace ridefit::io {
 namespace {
 
-// The rows of model/quarter_car_parameter_table.h and model/half_car_parameter_table.h.
-const model::ParameterInfo& axle_row(std::string_view key) {
-  return model::kQuarterCarParameters[model::quarter_car_parameter_index(key).value()];
-}
-
+// Row i of one of model/half_car_parameter_table.h's tables, within its range (the axles' keys
+// are quarter-car rows, model::quarter_car_row).
 template <std::size_t N>
 double read(const YamlMap& map, const std::array<model::ParameterInfo, N>& rows, std::size_t i) {
   return map.parameter(rows[i]);
@@ -46,22 +43,25 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
     topology.damper_state =
         parse_damper_state(axle.text("damper_state"), axle.locate("damper_state"));
   }
-  p.unsprung_mass_kg = axle.parameter(axle_row("unsprung_mass_kg"));
-  p.tyre_stiffness_N_per_m = axle.parameter(axle_row("tyre_stiffness_N_per_m"));
-  p.tyre_damping_Ns_per_m = axle.parameter(axle_row("tyre_damping_Ns_per_m"));
-  p.spring_stiffness_N_per_m = axle.parameter(axle_row("spring_stiffness_N_per_m"));
+  p.unsprung_mass_kg = axle.parameter(model::quarter_car_row("unsprung_mass_kg"));
+  p.tyre_stiffness_N_per_m = axle.parameter(model::quarter_car_row("tyre_stiffness_N_per_m"));
+  p.tyre_damping_Ns_per_m = axle.parameter(model::quarter_car_row("tyre_damping_Ns_per_m"));
+  p.spring_stiffness_N_per_m = axle.parameter(model::quarter_car_row("spring_stiffness_N_per_m"));
   // A strut's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0 there.
   p.damping_Ns_per_m =
-      strut ? axle.parameter(axle_row("damping_Ns_per_m"))
-            : axle.non_negative_up_to("damping_Ns_per_m", axle_row("damping_Ns_per_m").upper);
+      strut ? axle.parameter(model::quarter_car_row("damping_Ns_per_m"))
+            : axle.non_negative_up_to("damping_Ns_per_m",
+                                      model::quarter_car_row("damping_Ns_per_m").upper);
   // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it.
   p.compression_to_rebound_ratio = kSymmetricDamper;
   if (axle.has("compression_to_rebound_ratio")) {
-    p.compression_to_rebound_ratio = axle.parameter(axle_row("compression_to_rebound_ratio"));
+    p.compression_to_rebound_ratio =
+        axle.parameter(model::quarter_car_row("compression_to_rebound_ratio"));
   }
   p.top_mount_stiffness_N_per_m = 1.0;
   if (strut || axle.has("top_mount_stiffness_N_per_m")) {
-    p.top_mount_stiffness_N_per_m = axle.parameter(axle_row("top_mount_stiffness_N_per_m"));
+    p.top_mount_stiffness_N_per_m =
+        axle.parameter(model::quarter_car_row("top_mount_stiffness_N_per_m"));
   }
   const bool friction = strut && topology.damper_state == model::DamperState::kStickSlip;
   p.dahl_sigma0_N_per_m = 1.0;
@@ -69,18 +69,21 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
   p.dahl_exponent = 1.0;
   if (friction || axle.has("dahl_sigma0_N_per_m") || axle.has("coulomb_force_N") ||
       axle.has("dahl_exponent")) {
-    p.dahl_sigma0_N_per_m = axle.parameter(axle_row("dahl_sigma0_N_per_m"));
-    p.coulomb_force_N = axle.parameter(axle_row("coulomb_force_N"));
-    p.dahl_exponent = axle.parameter(axle_row("dahl_exponent"));
+    p.dahl_sigma0_N_per_m = axle.parameter(model::quarter_car_row("dahl_sigma0_N_per_m"));
+    p.coulomb_force_N = axle.parameter(model::quarter_car_row("coulomb_force_N"));
+    p.dahl_exponent = axle.parameter(model::quarter_car_row("dahl_exponent"));
   }
   // A controlled damper (the same keys and limits as the quarter car's).
   if (axle.has("damping_per_command_Ns_per_m")) {
-    p.damping_per_command_Ns_per_m = axle.parameter(axle_row("damping_per_command_Ns_per_m"));
+    p.damping_per_command_Ns_per_m =
+        axle.parameter(model::quarter_car_row("damping_per_command_Ns_per_m"));
   }
   if (axle.has("coulomb_force_per_command_N")) {
-    p.coulomb_force_per_command_N = axle.parameter(axle_row("coulomb_force_per_command_N"));
+    p.coulomb_force_per_command_N =
+        axle.parameter(model::quarter_car_row("coulomb_force_per_command_N"));
   }
-  if (axle.has("command_lag_s")) p.command_lag_s = axle.parameter(axle_row("command_lag_s"));
+  if (axle.has("command_lag_s"))
+    p.command_lag_s = axle.parameter(model::quarter_car_row("command_lag_s"));
   axle.finish();
   return {topology, p};
 }

@@ -18,12 +18,6 @@ model::DamperState parse_damper_state(const std::string& text, const std::string
 
 namespace {
 
-// The row of `key` in model/quarter_car_parameter_table.h, within its range.
-double read(const YamlMap& file, std::string_view key) {
-  return file.parameter(
-      model::kQuarterCarParameters[model::quarter_car_parameter_index(key).value()]);
-}
-
 // `key` is only meaningful together with `needed`: name both when `needed` is missing.
 void require_with(const YamlMap& file, const std::string& key, const std::string& needed,
                   const std::string& why) {
@@ -58,7 +52,8 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
         file, "top_mount_small_amplitude_stiffness_N_per_m", p.top_mount_stiffness_N_per_m,
         model::quarter_car_row("top_mount_small_amplitude_stiffness_N_per_m").upper,
         "at least top_mount_stiffness_N_per_m, the large-amplitude stiffness");
-    p.top_mount_transition_deflection_m = read(file, "top_mount_transition_deflection_m");
+    p.top_mount_transition_deflection_m =
+        file.parameter(model::quarter_car_row("top_mount_transition_deflection_m"));
   }
   // 2. Bump stop: stiffness and clearance together, the exponent optional (default 2).
   if (file.has("bump_stop_stiffness_N_per_m") || file.has("bump_stop_clearance_m") ||
@@ -69,11 +64,12 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
                                                                   : "bump_stop_exponent";
     require_with(file, given, "bump_stop_stiffness_N_per_m", "the stop's secant stiffness");
     require_with(file, given, "bump_stop_clearance_m", "the compression at first contact");
-    p.bump_stop_stiffness_N_per_m = read(file, "bump_stop_stiffness_N_per_m");
-    p.bump_stop_clearance_m = read(file, "bump_stop_clearance_m");
+    p.bump_stop_stiffness_N_per_m =
+        file.parameter(model::quarter_car_row("bump_stop_stiffness_N_per_m"));
+    p.bump_stop_clearance_m = file.parameter(model::quarter_car_row("bump_stop_clearance_m"));
     p.bump_stop_exponent = 2.0;
     if (file.has("bump_stop_exponent")) {
-      p.bump_stop_exponent = read(file, "bump_stop_exponent");
+      p.bump_stop_exponent = file.parameter(model::quarter_car_row("bump_stop_exponent"));
     }
   }
   // 3. Tyre lift-off: true | false, or 1 | 0 (what --set tyre_lift_off=1 writes).
@@ -87,7 +83,8 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
                  "the slope above the knee");
     require_with(file, "damping_above_knee_Ns_per_m", "damper_knee_velocity_m_per_s",
                  "where the slope changes");
-    p.damper_knee_velocity_m_per_s = read(file, "damper_knee_velocity_m_per_s");
+    p.damper_knee_velocity_m_per_s =
+        file.parameter(model::quarter_car_row("damper_knee_velocity_m_per_s"));
     // Digressive only: a slope above the knee greater than c_r would be a progressive damper.
     p.damping_above_knee_Ns_per_m = file.number("damping_above_knee_Ns_per_m");
     if (!(p.damping_above_knee_Ns_per_m > 0.0) ||
@@ -105,7 +102,8 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
   if (file.has("stribeck_velocity_m_per_s") || file.has("static_friction_force_N")) {
     require_with(file, "static_friction_force_N", "stribeck_velocity_m_per_s",
                  "the sliding velocity over which Fs falls to coulomb_force_N");
-    p.stribeck_velocity_m_per_s = read(file, "stribeck_velocity_m_per_s");
+    p.stribeck_velocity_m_per_s =
+        file.parameter(model::quarter_car_row("stribeck_velocity_m_per_s"));
     if (!(p.coulomb_force_N > 0.0)) {
       throw InputError(fmt::format("{} needs Dahl friction: coulomb_force_N > 0 (it is {})",
                                    file.locate("stribeck_velocity_m_per_s"), p.coulomb_force_N));
@@ -122,25 +120,28 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
 // 6. Controlled damper: each key optional (0 = off).
 void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<double>& p) {
   if (file.has("damping_per_command_Ns_per_m")) {
-    p.damping_per_command_Ns_per_m = read(file, "damping_per_command_Ns_per_m");
+    p.damping_per_command_Ns_per_m =
+        file.parameter(model::quarter_car_row("damping_per_command_Ns_per_m"));
   }
   if (file.has("coulomb_force_per_command_N")) {
-    p.coulomb_force_per_command_N = read(file, "coulomb_force_per_command_N");
+    p.coulomb_force_per_command_N =
+        file.parameter(model::quarter_car_row("coulomb_force_per_command_N"));
   }
-  if (file.has("command_lag_s")) p.command_lag_s = read(file, "command_lag_s");
+  if (file.has("command_lag_s"))
+    p.command_lag_s = file.parameter(model::quarter_car_row("command_lag_s"));
 }
 
 // 7. The accelerometers' measuring chain (acceleration_sensors.h), each key optional: gains
 // (default 1), a low-pass cutoff (default 0 = none) and its order (1 or 2, only with a cutoff).
 void read_acceleration_sensors(const YamlMap& file, model::AccelerationSensors<double>& s) {
   if (file.has("body_acc_gain")) {
-    s.body_acc_gain = read(file, "body_acc_gain");
+    s.body_acc_gain = file.parameter(model::quarter_car_row("body_acc_gain"));
   }
   if (file.has("wheel_acc_gain")) {
-    s.wheel_acc_gain = read(file, "wheel_acc_gain");
+    s.wheel_acc_gain = file.parameter(model::quarter_car_row("wheel_acc_gain"));
   }
   if (file.has("acc_sensor_cutoff_Hz")) {
-    s.acc_sensor_cutoff_Hz = read(file, "acc_sensor_cutoff_Hz");
+    s.acc_sensor_cutoff_Hz = file.parameter(model::quarter_car_row("acc_sensor_cutoff_Hz"));
   }
   if (file.has("acc_sensor_order")) {
     require_with(file, "acc_sensor_order", "acc_sensor_cutoff_Hz",
@@ -164,27 +165,30 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
   result.damper_state =
       damper_state.empty() ? file_state : parse_damper_state(damper_state, "damper state");
   auto& p = result.parameters;
-  p.sprung_mass_kg = read(file, "sprung_mass_kg");
-  p.unsprung_mass_kg = read(file, "unsprung_mass_kg");
-  p.tyre_stiffness_N_per_m = read(file, "tyre_stiffness_N_per_m");
-  p.tyre_damping_Ns_per_m = read(file, "tyre_damping_Ns_per_m");
-  p.spring_stiffness_N_per_m = read(file, "spring_stiffness_N_per_m");
-  p.top_mount_spring_path_stiffness_N_per_m = read(file, "top_mount_spring_path_stiffness_N_per_m");
-  p.top_mount_stiffness_N_per_m = read(file, "top_mount_stiffness_N_per_m");
+  p.sprung_mass_kg = file.parameter(model::quarter_car_row("sprung_mass_kg"));
+  p.unsprung_mass_kg = file.parameter(model::quarter_car_row("unsprung_mass_kg"));
+  p.tyre_stiffness_N_per_m = file.parameter(model::quarter_car_row("tyre_stiffness_N_per_m"));
+  p.tyre_damping_Ns_per_m = file.parameter(model::quarter_car_row("tyre_damping_Ns_per_m"));
+  p.spring_stiffness_N_per_m = file.parameter(model::quarter_car_row("spring_stiffness_N_per_m"));
+  p.top_mount_spring_path_stiffness_N_per_m =
+      file.parameter(model::quarter_car_row("top_mount_spring_path_stiffness_N_per_m"));
+  p.top_mount_stiffness_N_per_m =
+      file.parameter(model::quarter_car_row("top_mount_stiffness_N_per_m"));
   // The Maxwell element's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0.
-  p.damping_Ns_per_m = read(file, "damping_Ns_per_m");
+  p.damping_Ns_per_m = file.parameter(model::quarter_car_row("damping_Ns_per_m"));
   // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it (and by
   // default the same: the symmetric damper).
   p.compression_to_rebound_ratio = 1.0;
   if (file.has("compression_to_rebound_ratio")) {
-    p.compression_to_rebound_ratio = read(file, "compression_to_rebound_ratio");
+    p.compression_to_rebound_ratio =
+        file.parameter(model::quarter_car_row("compression_to_rebound_ratio"));
   }
   const bool friction_required = result.damper_state == model::DamperState::kStickSlip;
   if (friction_required || file.has("dahl_sigma0_N_per_m") || file.has("coulomb_force_N") ||
       file.has("dahl_exponent")) {
-    p.dahl_sigma0_N_per_m = read(file, "dahl_sigma0_N_per_m");
-    p.coulomb_force_N = read(file, "coulomb_force_N");
-    p.dahl_exponent = read(file, "dahl_exponent");
+    p.dahl_sigma0_N_per_m = file.parameter(model::quarter_car_row("dahl_sigma0_N_per_m"));
+    p.coulomb_force_N = file.parameter(model::quarter_car_row("coulomb_force_N"));
+    p.dahl_exponent = file.parameter(model::quarter_car_row("dahl_exponent"));
   } else {
     p.dahl_sigma0_N_per_m = 1.0;
     p.coulomb_force_N = 0.0;
