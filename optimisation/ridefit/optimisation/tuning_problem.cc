@@ -15,8 +15,19 @@ std::string variant_name(FrictionVariant variant, Accuracy accuracy) {
          (accuracy == Accuracy::kSearch ? "search" : "verify");
 }
 
+namespace {
+
+// A study built in memory is held to the file reader's rules.
+TuningStudy checked(TuningStudy study) {
+  study.optimiser.validate();
+  study.evaluation.validate();
+  return study;
+}
+
+}  // namespace
+
 TuningProblem::TuningProblem(TuningStudy study, EvaluationJournal* journal)
-    : study_(std::move(study)),
+    : study_(checked(std::move(study))),
       base_(load_base_model(study_, fmt::format("{}: set", study_.study_file.string()))),
       journal_(journal) {
   roads_.resize(study_.load_cases.size());

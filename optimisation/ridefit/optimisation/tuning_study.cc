@@ -3,7 +3,9 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "ridefit/comfort/weighting_filter.h"
@@ -25,8 +27,6 @@
 namespace ridefit::optimisation {
 namespace {
 
-constexpr long kMaxEvaluations = 1'000'000;
-constexpr long kMaxStarts = 1000;
 constexpr std::size_t kMaxLoadCases = 1000;
 const std::vector<std::string> kFrictionKeys = {"dahl_sigma0_N_per_m", "coulomb_force_N",
                                                 "dahl_exponent"};
@@ -229,6 +229,29 @@ void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningS
   }
 }
 
+// An integer key as `int`: the range rules are the settings' own (tuning_settings.h); this only
+// refuses what an int cannot hold.
+int int_of(const io::YamlMap& map, const char* key, int fallback) {
+  if (!map.has(key)) return fallback;
+  const long v = map.integer(key);
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
+    throw InputError(fmt::format("{} is {}, far beyond any meaningful value", map.locate(key), v));
+  }
+  return static_cast<int>(v);
+}
+
+double number_or(const io::YamlMap& map, const char* key, double fallback) {
+  return map.has(key) ? map.number(key) : fallback;
+}
+
+// The first rule `settings` break, located at its key in `map`.
+template <typename Settings>
+void check_settings(const io::YamlMap& map, const Settings& settings) {
+  if (const auto e = settings.error()) {
+    throw InputError(fmt::format("{} {}", map.locate(e->key), e->message));
+  }
+}
+
 void read_optimiser(const io::YamlMap& map, OptimiserSettings& o) {
   if (map.has("algorithm")) {
     const std::string a =
@@ -239,30 +262,21 @@ void read_optimiser(const io::YamlMap& map, OptimiserSettings& o) {
                   : a == "mlsl"     ? Algorithm::kMlsl
                                     : Algorithm::kCobyla;
   }
-  auto integer_in = [&](const char* key, long lo, long hi, long fallback) {
-    if (!map.has(key)) return fallback;
-    const long v = map.integer(key);
-    if (v < lo || v > hi) {
-      throw InputError(fmt::format("{} is {}, expected {} … {}", map.locate(key), v, lo, hi));
+  o.starts = int_of(map, "starts", o.starts);
+  if (map.has("seed")) {
+    const long v = map.integer("seed");
+    if (v < 0 || v > 4294967295L) {
+      throw InputError(fmt::format("{} is {}, expected 0 … 4294967295", map.locate("seed"), v));
     }
-    return v;
-  };
-  o.starts = static_cast<int>(integer_in("starts", 1, kMaxStarts, o.starts));
-  o.seed = static_cast<unsigned>(integer_in("seed", 0, 4294967295L, o.seed));
-  o.max_evaluations =
-      static_cast<int>(integer_in("max_evaluations", 1, kMaxEvaluations, o.max_evaluations));
-  if (map.has("x_tolerance")) o.x_tolerance = map.positive_up_to("x_tolerance", 0.5);
-  if (map.has("f_tolerance")) o.f_tolerance = map.non_negative_up_to("f_tolerance", 0.5);
-  if (map.has("max_time_s")) o.max_time_s = map.non_negative_up_to("max_time_s", 1e7);
-  if (map.has("initial_step")) o.initial_step = map.positive_up_to("initial_step", 1.0);
-  if (map.has("constraint_tolerance"))
-    o.constraint_tolerance = map.non_negative_up_to("constraint_tolerance", 0.01);
-  if (o.algorithm == Algorithm::kDirectL && o.starts > 1) {
-    throw InputError(
-        fmt::format("{}: DIRECT-L does not use a start point, so more starts only "
-                    "repeat it; give starts: 1",
-                    map.locate("starts")));
+    o.seed = static_cast<unsigned>(v);
   }
+  o.max_evaluations = int_of(map, "max_evaluations", o.max_evaluations);
+  o.x_tolerance = number_or(map, "x_tolerance", o.x_tolerance);
+  o.f_tolerance = number_or(map, "f_tolerance", o.f_tolerance);
+  o.max_time_s = number_or(map, "max_time_s", o.max_time_s);
+  o.initial_step = number_or(map, "initial_step", o.initial_step);
+  o.constraint_tolerance = number_or(map, "constraint_tolerance", o.constraint_tolerance);
+  check_settings(map, o);
   map.finish();
 }
 
@@ -273,29 +287,22 @@ void read_evaluation(const io::YamlMap& map, EvaluationSettings& e) {
                : m == "time"    ? EvaluationMethod::kTime
                                 : EvaluationMethod::kAuto;
   }
-  if (map.has("output_rate_Hz")) e.output_rate_Hz = map.positive_up_to("output_rate_Hz", 1e5);
-  if (map.has("settle_s")) e.settle_s = map.non_negative_up_to("settle_s", 1e4);
-  if (map.has("duration_s")) e.duration_s = map.positive_up_to("duration_s", 1e5);
-  if (map.has("relative_tolerance"))
-    e.relative_tolerance = map.number_in("relative_tolerance", 1e-12, 1e-2);
-  if (map.has("verify_relative_tolerance"))
-    e.verify_relative_tolerance = map.number_in("verify_relative_tolerance", 1e-12, 1e-2);
-  if (map.has("frequency_points")) {
-    const long n = map.integer("frequency_points");
-    if (n < 50 || n > 100000) {
-      throw InputError(
-          fmt::format("{} is {}, expected 50 … 100000", map.locate("frequency_points"), n));
-    }
-    e.frequency_points = static_cast<int>(n);
-  }
+  e.output_rate_Hz = number_or(map, "output_rate_Hz", e.output_rate_Hz);
+  e.settle_s = number_or(map, "settle_s", e.settle_s);
+  e.duration_s = number_or(map, "duration_s", e.duration_s);
+  e.relative_tolerance = number_or(map, "relative_tolerance", e.relative_tolerance);
+  e.verify_relative_tolerance =
+      number_or(map, "verify_relative_tolerance", e.verify_relative_tolerance);
+  e.frequency_points = int_of(map, "frequency_points", e.frequency_points);
   if (map.has("threads")) {
     const long n = map.integer("threads");
-    if (n < 0 || n > 1024) {
+    if (n < 0) {
       throw InputError(
-          fmt::format("{} is {}, expected 0 (every core) … 1024", map.locate("threads"), n));
+          fmt::format("{} is {}, expected 0 (every core) or more", map.locate("threads"), n));
     }
-    e.threads = static_cast<unsigned>(n);
+    e.threads = static_cast<unsigned>(std::min<long>(n, std::numeric_limits<unsigned>::max()));
   }
+  check_settings(map, e);
   map.finish();
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "ridefit/optimisation/tuning_settings.h"
 #include "ridefit/study/load_case_evaluation.h"
 
 namespace ridefit::optimisation {
@@ -67,9 +68,6 @@ namespace ridefit::optimisation {
 // case settings are tried on the model before anything runs.
 enum class ModelKind { kQuarterCar, kHalfCar };
 enum class Aggregate { kWeightedMean, kWorstCase };
-enum class Algorithm { kCobyla, kBobyqa, kIsres, kDirectL, kMlsl };
-// The one choice between the frequency domain and simulation (study/load_case_evaluation.h).
-using study::EvaluationMethod;
 
 struct DesignVariable {
   std::string name;
@@ -104,32 +102,6 @@ struct Constraint {
 
   // "dynamic_load_ratio <= 0.3 (worst case)"
   std::string describe() const;
-};
-
-struct OptimiserSettings {
-  Algorithm algorithm = Algorithm::kCobyla;
-  int starts = 1;
-  unsigned seed = 1;
-  double x_tolerance = 1e-3;
-  double f_tolerance = 1e-6;
-  int max_evaluations = 200;
-  double max_time_s = 0.0;
-  double initial_step = 0.1;
-  double constraint_tolerance = 1e-3;
-};
-
-struct EvaluationSettings {
-  EvaluationMethod method = EvaluationMethod::kAuto;
-  double output_rate_Hz = 1000.0;
-  double settle_s = 2.0;
-  double duration_s = 0.0;
-  // The search runs CVODE at 1e-4 (on the Passat study its optimum lies within 0.2 % of the one
-  // found at 1e-6, in 40 % less time); the reported optimum is checked at 1e-6, the accuracy
-  // of every other ridefit result.
-  double relative_tolerance = 1e-4;
-  double verify_relative_tolerance = 1e-6;
-  int frequency_points = 1000;
-  unsigned threads = 0;
 };
 
 struct Tradeoff {

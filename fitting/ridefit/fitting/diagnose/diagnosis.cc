@@ -137,6 +137,7 @@ DiagnosisResult result_of(const Selection& selection, DataKind kind) {
 DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& data,
                          const DiagnosisOptions& options,
                          const std::function<void(const std::string&)>& progress) {
+  options.validate();
   auto say = [&](const std::string& line) {
     if (progress) progress(line);
   };

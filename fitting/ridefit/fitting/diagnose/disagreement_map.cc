@@ -24,17 +24,10 @@ void check(const std::vector<ChannelPair>& channels, double fs, const Disagreeme
   if (!(fs > 0.0) || !std::isfinite(fs)) {
     throw InputError(fmt::format("sample rate {} Hz: expected a finite value > 0", fs));
   }
-  if (!(o.band_low_Hz >= 0.0) || !(o.band_low_Hz < o.band_high_Hz) ||
-      !(o.band_high_Hz < 0.5 * fs)) {
-    throw InputError(
-        fmt::format("band {}–{} Hz: expected 0 <= low < high below the Nyquist frequency {} Hz",
-                    o.band_low_Hz, o.band_high_Hz, 0.5 * fs));
-  }
-  if (!(o.segment_s > 0.0)) {
-    throw InputError(fmt::format("segment {} s: expected a length > 0", o.segment_s));
-  }
-  if (!(o.confidence > 0.0 && o.confidence < 1.0)) {
-    throw InputError(fmt::format("confidence {}: expected a value in (0, 1)", o.confidence));
+  o.validate();
+  if (!(o.band_high_Hz < 0.5 * fs)) {
+    throw InputError(fmt::format("band {}–{} Hz: the top is not below the Nyquist frequency {} Hz",
+                                 o.band_low_Hz, o.band_high_Hz, 0.5 * fs));
   }
   for (const auto& c : channels) {
     if (c.measured.size() != c.simulated.size()) {
@@ -145,6 +138,40 @@ void find_regions(const ChannelDisagreement& d, const std::vector<int>& side, st
 }
 
 }  // namespace
+
+void DisagreementOptions::validate() const {
+  if (!(band_low_Hz >= 0.0) || !(band_low_Hz < band_high_Hz) || !std::isfinite(band_high_Hz)) {
+    throw InputError(fmt::format("band {}–{} Hz: expected 0 <= low < high, both finite",
+                                 band_low_Hz, band_high_Hz));
+  }
+  if (!(above_band_high_Hz == 0.0 ||
+        (above_band_high_Hz > band_high_Hz && std::isfinite(above_band_high_Hz)))) {
+    throw InputError(fmt::format(
+        "band above {} Hz: expected 0 (automatic) or a finite top above the band's {} Hz",
+        above_band_high_Hz, band_high_Hz));
+  }
+  if (!(segment_s > 0.0) || !std::isfinite(segment_s)) {
+    throw InputError(fmt::format("segment {} s: expected a length > 0", segment_s));
+  }
+  if (!(confidence > 0.0 && confidence < 1.0)) {
+    throw InputError(fmt::format("confidence {}: expected a value in (0, 1)", confidence));
+  }
+  if (!(min_region_dB >= 0.0) || !std::isfinite(min_region_dB)) {
+    throw InputError(
+        fmt::format("smallest region {} dB: expected a finite value >= 0", min_region_dB));
+  }
+  if (min_region_bins < 1) {
+    throw InputError(fmt::format("smallest region {} bins: expected at least 1", min_region_bins));
+  }
+  if (!(pooled_max_width_Hz >= 0.0) || !std::isfinite(pooled_max_width_Hz)) {
+    throw InputError(fmt::format("pooled band width {} Hz: expected a finite value >= 0 (0: none)",
+                                 pooled_max_width_Hz));
+  }
+  if (!(pooled_min_scatter_dB > 0.0) || !std::isfinite(pooled_min_scatter_dB)) {
+    throw InputError(
+        fmt::format("pooled scatter {} dB: expected a finite value > 0", pooled_min_scatter_dB));
+  }
+}
 
 DisagreementMap map_disagreement(const std::vector<ChannelPair>& channels, double sample_rate_Hz,
                                  const DisagreementOptions& options) {

@@ -44,6 +44,11 @@ struct DisagreementOptions {
   // Peak frequencies (peak_shift.h): measured against simulated per channel, at the rate
   // 1 − confidence shared over the channels.
   bool compare_peaks = true;
+
+  // InputError naming the option for: a band not 0 < low < high, above_band_high_Hz neither 0
+  // nor above the band, a segment not > 0, a confidence outside (0, 1), a negative region size
+  // or width, fewer than 1 bin, a scatter not > 0.
+  void validate() const;
 };
 
 // What made a region significant.

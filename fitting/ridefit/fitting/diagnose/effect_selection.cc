@@ -82,10 +82,27 @@ bool to_try_set_has(const std::vector<std::pair<std::size_t, EffectChange>>& to_
 
 }  // namespace
 
+void SelectionOptions::validate() const {
+  if (!(min_held_out_improvement > 0.0 && min_held_out_improvement < 1.0)) {
+    throw InputError(fmt::format("held-out improvement {}: expected a share in (0, 1)",
+                                 min_held_out_improvement));
+  }
+  if (!(min_bic_drop >= 0.0) || !std::isfinite(min_bic_drop)) {
+    throw InputError(fmt::format("BIC drop {}: expected a finite value >= 0", min_bic_drop));
+  }
+  if (max_effects < 0) {  // 0: fit and map the baseline only
+    throw InputError(fmt::format("effects per diagnosis {}: expected at least 0", max_effects));
+  }
+  if (threads > 1024) {
+    throw InputError(fmt::format("threads {}: expected 0 (every core) … 1024", threads));
+  }
+}
+
 Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string> free,
                          ParameterBounds bounds, const std::vector<const Effect*>& library,
                          const FitAndScore& fit, const SelectionOptions& options,
                          const std::function<void(const std::string&)>& say) {
+  options.validate();
   auto refine = [&](const ScoredFit& screened, const std::vector<std::string>& names,
                     const ParameterBounds& limits) {
     if (!options.refine) return screened;

@@ -89,6 +89,10 @@ struct SelectionOptions {
   // screening fits are coarser than reported ones).
   std::string gap_unit = "dB";
   bool refine = true;
+
+  // InputError naming the option for: an improvement share outside (0, 1), a negative BIC drop or
+  // effect count, more than 1024 threads.
+  void validate() const;
 };
 
 struct Selection {

@@ -152,6 +152,7 @@ LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records) {
 DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnosisData& data,
                                const LoopDiagnosisOptions& options,
                                const std::function<void(const std::string&)>& progress) {
+  options.validate();
   auto say = [&](const std::string& line) {
     if (progress) progress(line);
   };

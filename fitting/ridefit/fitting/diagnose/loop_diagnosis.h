@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ridefit/fitting/diagnose/diagnosis.h"
+#include "ridefit/fitting/diagnose/loop_diagnosis_options.h"
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/simulate/strut_test_response.h"
 
@@ -28,21 +29,6 @@ struct LoopDiagnosisData {
 // second's lead-in). Several: they alternate, the 1st, 3rd, … are fitted and the 2nd, 4th, …
 // judge, each simulated from rest at its own first sample.
 LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records);
-
-struct LoopDiagnosisOptions {
-  // The baseline's parameters every fit frees (fitting/strut_parameters.h names); empty = the
-  // default: damping_Ns_per_m, force_offset_N (a load cell's zero is never known exactly), and
-  // coulomb_force_N when the baseline has friction.
-  std::vector<std::string> baseline_free;
-  std::vector<std::string> effects;  // ids to try; empty = the whole library
-  int max_iterations = 50;           // per fit
-  simulate::StrutTestSolverOptions solver;
-  LoopDisagreementOptions map;
-  SelectionOptions selection;  // significance, rounds, threads (gap_unit and refine set here)
-  // A region of the final map counts as unexplained when its mean residual is at least this
-  // share of the measured force's RMS.
-  double unexplained_share = 0.03;
-};
 
 // Fits the baseline strut (`baseline.strut`), maps its loops against the held-out records, tries
 // each effect that applies to loops, accepts the significant best, up to selection.max_effects

@@ -107,9 +107,22 @@ double force_nrmse_percent(const std::vector<HysteresisRecord>& records,
   return spread > 0.0 ? 100.0 * std::sqrt(residual / spread) : 0.0;
 }
 
+void LoopDisagreementOptions::validate() const {
+  if (bins < 2) throw InputError(fmt::format("bins {}: expected at least 2", bins));
+  if (!(min_region_share >= 0.0 && min_region_share < 1.0)) {
+    throw InputError(
+        fmt::format("smallest region share {}: expected a value in [0, 1)", min_region_share));
+  }
+  if (!(significance_sigmas > 0.0) || !std::isfinite(significance_sigmas)) {
+    throw InputError(fmt::format("significance {} standard errors: expected a finite value > 0",
+                                 significance_sigmas));
+  }
+}
+
 LoopDisagreementMap map_loop_disagreement(const std::vector<HysteresisRecord>& records,
                                           const std::vector<std::vector<double>>& simulated_force_N,
                                           const LoopDisagreementOptions& options) {
+  options.validate();
   if (records.empty() || records.size() != simulated_force_N.size()) {
     throw InputError(
         fmt::format("the loop map needs one simulated force per record ({} records, "

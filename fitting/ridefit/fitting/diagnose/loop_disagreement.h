@@ -16,6 +16,9 @@ struct LoopDisagreementOptions {
   // (about its mean) on average.
   double min_region_share = 0.02;
   double significance_sigmas = 3.0;  // |mean residual| of a bin against its standard error
+
+  // InputError naming the option for: fewer than 2 bins, a share outside [0, 1), sigmas not > 0.
+  void validate() const;
 };
 
 // A run of adjacent velocity or displacement bins whose mean residual has the same sign and is

@@ -1,0 +1,69 @@
+#include "ridefit/fitting/diagnose/diagnosis_options.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <set>
+
+#include "ridefit/common/errors.h"
+#include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+void require_positive(double value, const char* what) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw InputError(fmt::format("{} {}: expected a finite value > 0", what, value));
+  }
+}
+
+void require_tolerance(double value, const char* what) {
+  if (!(value > 0.0 && value <= 0.1)) {
+    throw InputError(fmt::format("{} {}: expected a value in (0, 0.1]", what, value));
+  }
+}
+
+}  // namespace
+
+void check_effect_ids(const std::vector<std::string>& ids) {
+  std::set<std::string> seen;
+  for (const auto& id : ids) {
+    find_effect(id);  // InputError naming the library's ids for an unknown one
+    if (!seen.insert(id).second) {
+      throw InputError(fmt::format("effects: '{}' is given twice", id));
+    }
+  }
+}
+
+void DiagnosisOptions::validate() const {
+  std::set<std::string> freed;
+  for (const auto& name : baseline_free) {
+    if (!model::quarter_car_parameter_index(name)) {
+      throw InputError(
+          fmt::format("baseline free parameters: '{}' is not a quarter-car parameter", name));
+    }
+    if (!freed.insert(name).second) {
+      throw InputError(fmt::format("baseline free parameters: '{}' is given twice", name));
+    }
+  }
+  check_effect_ids(effects);
+  fit.validate(false);  // its free parameters and tolerance are the diagnosis's own
+  require_tolerance(screening_relative_tolerance, "screening relative tolerance");
+  require_tolerance(final_relative_tolerance, "final relative tolerance");
+  if (screening_iterations < 1) {
+    throw InputError(
+        fmt::format("screening iteration limit {}: expected at least 1", screening_iterations));
+  }
+  DisagreementOptions band_map = map;  // diagnose() gives the map the fit's band
+  band_map.band_low_Hz = fit.band_low_Hz;
+  band_map.band_high_Hz = fit.band_high_Hz;
+  band_map.validate();
+  selection.validate();
+  require_positive(unexplained_dB, "unexplained size (dB)");
+  require_positive(unexplained_width_Hz, "unexplained width (Hz)");
+  require_positive(unexplained_wide_dB, "unexplained wide size (dB)");
+  require_positive(unexplained_wide_width_Hz, "unexplained wide width (Hz)");
+}
+
+}  // namespace ridefit::fitting::diagnose
