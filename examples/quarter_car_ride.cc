@@ -51,7 +51,9 @@ int main(int argc, char** argv) {
     // 1. Modes. The file's third argument replaces its damper_state: the stick/slip model is
     //    nonlinear and has no modes, its slip and stick limits are linear and do.
     for (const std::string state : {"slip", "stick"}) {
-      const io::QuarterCarFile linear = io::load_quarter_car(argv[1], {}, state);
+      io::ModelOverrides topology;
+      topology.damper_state = state;
+      const io::QuarterCarFile linear = io::load_quarter_car(argv[1], topology);
       const simulate::ModalAnalysis modes = simulate::quarter_car_modes(linear.make_model());
       for (const simulate::OscillatoryMode& mode : modes.oscillatory) {
         fmt::print("{:<5} {:<5} mode {:7.3f} Hz, damping ratio {:.4f}\n", state, mode.dominant_dof,

@@ -120,12 +120,12 @@ TEST_F(CompressionToReboundRatioFile, HalfCarOverrideSetsTheKeyTheFileLeavesOut)
       [&] {
         load_half_car(path, {{"front.compression_to_rebound_ratios", "0.4"}});
       },
-      "--set front.compression_to_rebound_ratios: not a key of"));
+      "'front.compression_to_rebound_ratios' is not a key of"));
   EXPECT_TRUE(testing::throws_input_error(
       [&] {
         load_half_car(path, {{"seat.compression_to_rebound_ratio", "0.4"}});
       },
-      "--set seat.compression_to_rebound_ratio: not a key of"));
+      "'seat.compression_to_rebound_ratio' is not a key of"));
 }
 
 TEST_F(CompressionToReboundRatioFile, HalfCarRejectsRatiosOutsideZeroToTenNamingTheDottedKey) {
@@ -147,7 +147,7 @@ TEST_F(CompressionToReboundRatioFile, HalfCarRejectsRatiosOutsideZeroToTenNaming
       [&] {
         load_half_car(path, {{"front.compression_to_rebound_ratio", "abc"}});
       },
-      "(given as --set front.compression_to_rebound_ratio=abc)"));
+      "(given as an override front.compression_to_rebound_ratio=abc)"));
   EXPECT_TRUE(testing::throws_input_error(
       [&] {
         load_half_car(

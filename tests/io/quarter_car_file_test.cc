@@ -4,6 +4,7 @@
 
 #include "ridefit/common/errors.h"
 #include "support/passat.h"
+#include "support/throws_input_error.h"
 
 namespace ridefit::io {
 namespace {
@@ -18,8 +19,9 @@ TEST(QuarterCarFile, ReadsEveryKeyOfThePassatCorner) {
 }
 
 TEST(QuarterCarFile, OverridesAndDamperStateReplaceTheFilesValues) {
-  const auto file = load_quarter_car(testing::dataset("vehicles/passat_b8_front.yaml"),
-                                     {{"coulomb_force_N", 12.0}}, "slip");
+  ModelOverrides overrides{{"coulomb_force_N", 12.0}};
+  overrides.damper_state = "slip";
+  const auto file = load_quarter_car(testing::dataset("vehicles/passat_b8_front.yaml"), overrides);
   EXPECT_EQ(file.damper_state, model::DamperState::kSlip);
   EXPECT_DOUBLE_EQ(file.parameters.coulomb_force_N, 12.0);
 }
@@ -34,8 +36,18 @@ TEST(QuarterCarFile, OverridesAreValidatedLikeTheFile) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("coulomb_force'"), std::string::npos) << e.what();
   }
+  // A number's text is checked by the file's own rule, naming where it came from.
+  ModelOverrides typed;
+  typed.origin = "given on the command line as --set";
+  typed.set("coulomb_force_N", "abc");
+  EXPECT_TRUE(testing::throws_input_error(
+      [&] { load_quarter_car(path, typed); },
+      "key 'coulomb_force_N' is 'abc', expected a number (given on the command line as --set "
+      "coulomb_force_N=abc)"));
+  ModelOverrides state;
+  state.damper_state = "stuck";
   try {
-    load_quarter_car(path, {}, "stuck");
+    load_quarter_car(path, state);
     FAIL() << "an unknown damper state must be rejected";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("slip, stick, stick_slip"), std::string::npos) << e.what();

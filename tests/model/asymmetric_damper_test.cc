@@ -22,7 +22,7 @@
 namespace ridefit::model {
 namespace {
 
-io::HalfCarFile ajayi(const std::vector<io::KeyOverride>& overrides = {}) {
+io::HalfCarFile ajayi(const io::ModelOverrides& overrides = {}) {
   return io::load_half_car(testing::dataset("vehicles/ajayi_half_car.yaml"), overrides);
 }
 
@@ -233,11 +233,10 @@ TEST(AsymmetricDamper, AnAsymmetricDamperMakesTheModelNonlinear) {
   EXPECT_THROW(simulate::half_car_state_space(passive.make_model()), std::invalid_argument);
   EXPECT_THROW(assemble_mass_damping_stiffness(passive.topology, passive.parameters),
                std::invalid_argument);
-  const std::vector<io::KeyOverride> slip = {{"front.suspension", "strut"},
-                                             {"front.damper_state", "slip"}};
+  const io::ModelOverrides slip = {{"front.suspension", "strut"}, {"front.damper_state", "slip"}};
   EXPECT_TRUE(ajayi(slip).make_model().is_linear());
   auto asymmetric_slip = slip;
-  asymmetric_slip.push_back({"front.compression_to_rebound_ratio", "2"});
+  asymmetric_slip.set("front.compression_to_rebound_ratio", "2");
   EXPECT_FALSE(ajayi(asymmetric_slip).make_model().is_linear());
   // A stick strut's damper is locked: its split never acts and the car stays linear.
   EXPECT_TRUE(ajayi({{"front.suspension", "strut"},

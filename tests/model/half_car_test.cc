@@ -21,7 +21,7 @@ namespace {
 
 constexpr double kG = 9.80665;
 
-io::HalfCarFile ajayi(const std::vector<io::KeyOverride>& overrides = {}) {
+io::HalfCarFile ajayi(const io::ModelOverrides& overrides = {}) {
   return io::load_half_car(testing::dataset("vehicles/ajayi_half_car.yaml"), overrides);
 }
 

@@ -80,8 +80,10 @@ TEST(ParameterTable, TheQuarterCarReaderAndValidateRefuseWhatTheTableRefuses) {
     const double above = row.upper * 1.5;
     auto overrides = partners(row.key);
     overrides[std::string(row.key)] = above;
+    io::ModelOverrides given;
+    for (const auto& [key, value] : overrides) given.set(key, value);
     const std::string message =
-        testing::input_error_message([&] { io::load_quarter_car(file, overrides); });
+        testing::input_error_message([&] { io::load_quarter_car(file, given); });
     EXPECT_NE(message.find(std::string(row.key)), std::string::npos) << message;
     // The limit in the reader's wording ({:g} or {}); c_h's rule, <= c_r, is tighter than its row.
     if (row.key != "damping_above_knee_Ns_per_m") {

@@ -19,7 +19,7 @@
 namespace ridefit::study {
 namespace {
 
-io::HalfCarFile ajayi(const std::vector<io::KeyOverride>& overrides = {}) {
+io::HalfCarFile ajayi(const io::ModelOverrides& overrides = {}) {
   return io::load_half_car(testing::dataset("vehicles/ajayi_half_car.yaml"), overrides);
 }
 

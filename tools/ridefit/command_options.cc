@@ -161,20 +161,26 @@ io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
                                              const std::vector<std::string>& set_entries,
                                              const std::string& damper_state,
                                              const std::string& state_flag) {
-  const std::map<std::string, double> overrides = parse_overrides(set_entries);
-  for (const auto& [key, value] : overrides) {
+  io::ModelOverrides overrides;
+  overrides.origin = "given on the command line as --set";
+  overrides.damper_state = damper_state;
+  for (const auto& [key, value] : parse_overrides(set_entries)) {
     if (key == "damper_state" || key == "model") {
       throw InputError(fmt::format(
           "--set {}: not a number key; {}", key,
           state_flag.empty() ? std::string("this command chooses the damper's topology itself")
                              : fmt::format("use {} for the topology", state_flag)));
     }
+    overrides.set(key, value);
   }
-  try {
-    return io::load_quarter_car(model_file, overrides, damper_state);
-  } catch (const InputError& e) {
-    throw InputError(with_override_origin(e.what(), "given on the command line as --set "));
-  }
+  return io::load_quarter_car(model_file, overrides);
+}
+
+io::ModelOverrides half_car_set(const std::vector<std::string>& set_entries) {
+  io::ModelOverrides overrides;
+  overrides.origin = "given on the command line as --set";
+  overrides.keys = parse_key_values(set_entries);
+  return overrides;
 }
 
 }  // namespace ridefit::cli

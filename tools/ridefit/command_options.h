@@ -75,7 +75,8 @@ io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,
                                              const std::string& damper_state,
                                              const std::string& state_flag);
 
-// `message` with every io::kOverrideMarker replaced by `origin` (io/quarter_car_file.h).
-using io::with_override_origin;
+// The `--set` entries as overrides of a half-car file (values as typed; the file's reader
+// checks them), naming the flag in every message they cause.
+io::ModelOverrides half_car_set(const std::vector<std::string>& set_entries);
 
 }  // namespace ridefit::cli

@@ -111,7 +111,7 @@ void simulate_half_car(const SimulateFlags& flags) {
         "--damper-state: a half car has a damper state per axle; use --set "
         "front.damper_state=stick_slip (and front.suspension=strut)");
   }
-  const auto file = io::load_half_car(flags.model_file, parse_key_values(flags.overrides), "--set");
+  const auto file = io::load_half_car(flags.model_file, half_car_set(flags.overrides));
   const model::HalfCar car = file.make_model();
   const auto road = road::load_excitation(flags.excitation_file);
   auto options = options_from<simulate::HalfCarSimulationOptions>(flags, *road);

@@ -2,9 +2,6 @@
 
 #include <fmt/core.h>
 
-#include <map>
-#include <stdexcept>
-
 #include "ridefit/common/errors.h"
 #include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
@@ -38,11 +35,11 @@ std::vector<std::pair<std::string, std::string>> tuned_values(
     const TuningStudy& study, std::span<const double> design_values) {
   std::vector<std::pair<std::string, std::string>> values = study.model_settings;
   for (const auto& [key, value] : study.friction_values) {
-    values.emplace_back(key, fmt::format("{:.17g}", value));
+    values.emplace_back(key, fmt::format("{}", value));
   }
   for (std::size_t v = 0; v < study.design.size(); ++v) {
     for (const auto& key : study.design[v].keys) {
-      values.emplace_back(key, fmt::format("{:.17g}", design_values[v]));
+      values.emplace_back(key, fmt::format("{}", design_values[v]));
     }
   }
   return values;
@@ -53,61 +50,52 @@ TuningModel build_tuning_model(const TuningStudy& study, FrictionVariant variant
                                const std::string& origin) {
   const std::vector<ModelValue> values = study_values(study, load_case, design_values);
   TuningModel model;
+  // Errors read "ORIGIN: the file's message (given as KEY=VALUE)": here the overrides came from
+  // the study.
+  io::ModelOverrides overrides;
+  overrides.origin = "given as";
   if (study.kind == ModelKind::kQuarterCar) {
-    std::map<std::string, double> overrides;
-    std::string damper_state;
     for (const auto& [key, text] : study.model_settings) {
       if (key == "damper_state") {
-        damper_state = text;
-        continue;
-      }
-      if (key == "model") {
-        throw InputError(fmt::format("{}: the model type cannot be replaced", origin));
-      }
-      try {
-        std::size_t used = 0;
-        overrides[key] = std::stod(text, &used);
-        if (used != text.size()) throw std::invalid_argument(text);
-      } catch (const std::logic_error&) {
-        throw InputError(fmt::format("{} {}: '{}' is not a number", origin, key, text));
+        overrides.damper_state = text;
+      } else {
+        overrides.set(key, text);
       }
     }
-    for (const auto& [key, value] : values) overrides[key] = value;
+    for (const auto& [key, value] : values) overrides.set(key, value);
     try {
-      auto file = io::load_quarter_car(study.model_file, overrides, damper_state);
+      auto file = io::load_quarter_car(study.model_file, overrides);
       if (variant == FrictionVariant::kBlind &&
           file.damper_state == model::DamperState::kStickSlip) {
-        file = io::load_quarter_car(study.model_file, overrides, "slip");
+        overrides.damper_state = "slip";
+        file = io::load_quarter_car(study.model_file, overrides);
       }
       model.quarter = std::move(file);
     } catch (const InputError& e) {
-      // Here the overrides came from the study.
-      std::string message = e.what();
-      const std::string marker = io::kOverrideMarker;
-      if (const auto at = message.find(marker); at != std::string::npos) {
-        message.replace(at, marker.size(), "given as ");
-      }
-      throw InputError(fmt::format("{}: {}", origin, message));
+      throw InputError(fmt::format("{}: {}", origin, e.what()));
     }
     return model;
   }
-  std::vector<io::KeyOverride> overrides = study.model_settings;
-  for (const auto& [key, value] : values)
-    overrides.emplace_back(key, fmt::format("{:.17g}", value));
-  auto file = io::load_half_car(study.model_file, overrides, origin);
-  if (variant == FrictionVariant::kBlind) {
-    bool changed = false;
-    if (is_stick_slip_strut(file.topology.front)) {
-      overrides.emplace_back("front.damper_state", "slip");
-      changed = true;
+  overrides.keys = study.model_settings;
+  for (const auto& [key, value] : values) overrides.set(key, value);
+  try {
+    auto file = io::load_half_car(study.model_file, overrides);
+    if (variant == FrictionVariant::kBlind) {
+      bool changed = false;
+      if (is_stick_slip_strut(file.topology.front)) {
+        overrides.set("front.damper_state", "slip");
+        changed = true;
+      }
+      if (is_stick_slip_strut(file.topology.rear)) {
+        overrides.set("rear.damper_state", "slip");
+        changed = true;
+      }
+      if (changed) file = io::load_half_car(study.model_file, overrides);
     }
-    if (is_stick_slip_strut(file.topology.rear)) {
-      overrides.emplace_back("rear.damper_state", "slip");
-      changed = true;
-    }
-    if (changed) file = io::load_half_car(study.model_file, overrides, origin);
+    model.half = std::move(file);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", origin, e.what()));
   }
-  model.half = std::move(file);
   return model;
 }
 

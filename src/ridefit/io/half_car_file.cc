@@ -213,14 +213,20 @@ bool half_car_has_key(const std::filesystem::path& path, const std::string& dott
   return find_scalar(root, parts).IsDefined() || optional_key(parts);
 }
 
-HalfCarFile load_half_car(const std::filesystem::path& path,
-                          const std::vector<KeyOverride>& overrides, const std::string& origin) {
+HalfCarFile load_half_car(const std::filesystem::path& path, const ModelOverrides& overrides) {
   const YamlMap file = YamlMap::load(path);
-  if (overrides.empty()) return read_half_car(file);
+  if (!overrides.damper_state.empty()) {
+    throw InputError(fmt::format(
+        "{}: a half car has a damper state per axle; set front.damper_state or rear.damper_state "
+        "({} damper_state={})",
+        path.string(), overrides.origin, overrides.damper_state));
+  }
+  if (overrides.keys.empty()) return read_half_car(file);
   YAML::Node root = YAML::Clone(YAML::LoadFile(path.string()));
-  for (const auto& [key, value] : overrides) {
+  for (const auto& [key, value] : overrides.keys) {
     if (key == "model") {
-      throw InputError(fmt::format("{} model: the model type cannot be replaced", origin));
+      throw InputError(fmt::format("'model': the model type cannot be replaced ({} model={})",
+                                   overrides.origin, value));
     }
     const std::vector<std::string> parts = split_dotted(key);
     YAML::Node target = find_scalar(root, parts);
@@ -231,24 +237,16 @@ HalfCarFile load_half_car(const std::filesystem::path& path,
       axle[parts[1]] = value;  // an optional key the file leaves at its default
     } else {
       throw InputError(
-          fmt::format("{} {}: not a key of {} (use a dotted path to a key the file has, e.g. "
+          fmt::format("'{}' is not a key of {}: use a dotted path to a key the file has, e.g. "
                       "front.damping_Ns_per_m, or an optional one such as "
-                      "front.compression_to_rebound_ratio)",
-                      origin, key, path.string()));
+                      "front.compression_to_rebound_ratio ({} {}={})",
+                      key, path.string(), overrides.origin, key, value));
     }
   }
   try {
     return read_half_car(YamlMap(root, path, ""));
   } catch (const InputError& e) {
-    const std::string message = e.what();
-    for (const auto& [key, value] : overrides) {
-      const auto last = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
-      if (message.find("'" + key + "'") != std::string::npos ||
-          message.find(last) != std::string::npos) {
-        throw InputError(fmt::format("{} (given as {} {}={})", message, origin, key, value));
-      }
-    }
-    throw;
+    throw InputError(with_override_named(e.what(), overrides));
   }
 }
 

@@ -204,42 +204,24 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
 }  // namespace
 
 QuarterCarFile load_quarter_car(const std::filesystem::path& path,
-                                const std::map<std::string, double>& overrides,
-                                const std::string& damper_state) {
+                                const ModelOverrides& overrides) {
   YamlMap file = YamlMap::load(path);
-  if (overrides.empty()) return read_quarter_car(file, damper_state);
-  for (const auto& [key, value] : overrides) {
+  if (overrides.keys.empty()) return read_quarter_car(file, overrides.damper_state);
+  for (const auto& [key, value] : overrides.keys) {
     if (key == "damper_state" || key == "model") {
       throw InputError(fmt::format(
-          "{}: override '{}' is not a number key; the damper's topology is chosen as its damper "
-          "state",
-          path.string(), key));
+          "{}: '{}' is not a number key; the damper's topology is chosen as its damper state "
+          "({} {}={})",
+          path.string(), key, overrides.origin, key, value));
     }
   }
   YAML::Node root = YAML::LoadFile(path.string());
-  for (const auto& [key, value] : overrides) root[key] = value;
+  for (const auto& [key, value] : overrides.keys) root[key] = value;
   try {
-    return read_quarter_car(YamlMap(root, path, ""), damper_state);
+    return read_quarter_car(YamlMap(root, path, ""), overrides.damper_state);
   } catch (const InputError& e) {
-    // Say so when the offending key came from an override rather than the file (callers
-    // replace kOverrideMarker with where the override came from: a flag, a study, a spec).
-    const std::string message = e.what();
-    for (const auto& [key, value] : overrides) {
-      if (message.find("'" + key + "'") != std::string::npos) {
-        throw InputError(fmt::format("{} ({}{}={})", message, kOverrideMarker, key, value));
-      }
-    }
-    throw;
+    throw InputError(with_override_named(e.what(), overrides));
   }
-}
-
-std::string with_override_origin(std::string message, const std::string& origin) {
-  const std::string marker = kOverrideMarker;
-  for (auto at = message.find(marker); at != std::string::npos;
-       at = message.find(marker, at + origin.size())) {
-    message.replace(at, marker.size(), origin);
-  }
-  return message;
 }
 
 }  // namespace ridefit::io

@@ -1,9 +1,9 @@
 #pragma once
 
 #include <filesystem>
-#include <map>
 #include <string>
 
+#include "ridefit/io/model_overrides.h"
 #include "ridefit/model/quarter_car.h"
 
 namespace ridefit::io {
@@ -74,17 +74,10 @@ struct QuarterCarFile {
   model::QuarterCar make_model() const { return {damper_state, parameters}; }
 };
 
-// `overrides` replace (or add) numeric keys before validation, e.g. {"coulomb_force_N", 30};
-// `damper_state` ("" = as in the file) replaces the file's topology. An error caused by an
-// override ends with "(" kOverrideMarker "KEY=VALUE)"; callers replace the marker with where
-// the override came from (a --set flag, a study, a spec file): the library names no flags.
-inline constexpr const char* kOverrideMarker = "given as an override ";
-// `message` with every kOverrideMarker replaced by `origin` (e.g. "given on the command line as
-// --set ", "given in spec.yaml: key 'set' as ").
-std::string with_override_origin(std::string message, const std::string& origin);
+// `overrides` (model_overrides.h) replace or add keys before the file is checked, and may
+// replace its damper state; "model" and "damper_state" are not keys an override may set.
 QuarterCarFile load_quarter_car(const std::filesystem::path& path,
-                                const std::map<std::string, double>& overrides = {},
-                                const std::string& damper_state = "");
+                                const ModelOverrides& overrides = {});
 
 model::DamperState parse_damper_state(const std::string& text, const std::string& where);
 

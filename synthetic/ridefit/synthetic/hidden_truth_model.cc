@@ -25,14 +25,11 @@ HiddenTruthModel load_truth_model(const HiddenDataset& d) {
     }
     return {file.make_model(), strut};
   }
-  model::QuarterCar car = [&] {
-    try {
-      return io::load_quarter_car(d.model, d.set, d.damper_state).make_model();
-    } catch (const InputError& e) {
-      throw InputError(
-          io::with_override_origin(e.what(), fmt::format("given in {} as ", d.set_location)));
-    }
-  }();
+  io::ModelOverrides overrides;
+  overrides.origin = fmt::format("given in {} as", d.set_location);
+  overrides.damper_state = d.damper_state;
+  for (const auto& [key, value] : d.set) overrides.set(key, value);
+  const model::QuarterCar car = io::load_quarter_car(d.model, overrides).make_model();
   road::load_excitation(d.excitation);
   // The sensor model checks its band against the rate only when it measures.
   std::mt19937_64 rng(0);
