@@ -74,7 +74,7 @@ struct QuarterCarFile {
   model::QuarterCar make_model() const { return {damper_state, parameters}; }
 };
 
-// `overrides` replace (or add) numeric keys before validation, e.g. {"coulomb_force_N", 30};
+// `overrides` replace (or add) numeric keys before validation, e.g. coulomb_force_N = 30;
 // `damper_state` ("" = as in the file) replaces the file's topology. An error caused by an
 // override ends with "(" kOverrideMarker "KEY=VALUE)"; callers replace the marker with where
 // the override came from (a --set flag, a study, a spec file): the library names no flags.
