@@ -120,12 +120,12 @@ TEST_F(CompressionToReboundRatioFile, HalfCarOverrideSetsTheKeyTheFileLeavesOut)
       [&] {
         load_half_car(path, {{"front.compression_to_rebound_ratios", "0.4"}});
       },
-      "--set front.compression_to_rebound_ratios: not a key of"));
+      "an override front.compression_to_rebound_ratios: not a key of"));
   EXPECT_TRUE(testing::throws_input_error(
       [&] {
         load_half_car(path, {{"seat.compression_to_rebound_ratio", "0.4"}});
       },
-      "--set seat.compression_to_rebound_ratio: not a key of"));
+      "an override seat.compression_to_rebound_ratio: not a key of"));
 }
 
 TEST_F(CompressionToReboundRatioFile, HalfCarRejectsRatiosOutsideZeroToTenNamingTheDottedKey) {
@@ -145,7 +145,7 @@ TEST_F(CompressionToReboundRatioFile, HalfCarRejectsRatiosOutsideZeroToTenNaming
       "key 'front.compression_to_rebound_ratio' is 'abc', expected a number"));
   EXPECT_TRUE(testing::throws_input_error(
       [&] {
-        load_half_car(path, {{"front.compression_to_rebound_ratio", "abc"}});
+        load_half_car(path, {{"front.compression_to_rebound_ratio", "abc"}}, "--set");
       },
       "(given as --set front.compression_to_rebound_ratio=abc)"));
   EXPECT_TRUE(testing::throws_input_error(

@@ -101,7 +101,7 @@ void run(const FrictionStudyFlags& flags) {
     files.push_back(stem + "_psd.csv");
   }
   if (!flags.output_dir.empty()) {
-    outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+    outputs.add_folder(flags.output_dir, "-o", files, flags.force, "--force");
     io::prepare_output_directory(flags.output_dir, "-o");
   }
   // Written into a staged copy of the folder, put in place as a whole once every case ran.

@@ -61,16 +61,17 @@ struct HalfCarFile {
 
 // A replacement for one key of the file, by dotted path: {"front.damping_Ns_per_m", "1500"},
 // {"front.suspension", "strut"}. The key must exist in the file (an unknown one is an
-// InputError naming it and `origin`, e.g. "--set" or the study file), so a typo never adds a
-// key that nothing reads. The exceptions are the optional keys that stand alone with a default,
+// InputError naming it and `origin`: "an override" unless the caller says where the overrides
+// came from, e.g. the CLI's "--set" or the study file), so a typo never adds a key that nothing
+// reads. The exceptions are the optional keys that stand alone with a default,
 // front.compression_to_rebound_ratio and rear.compression_to_rebound_ratio (and the controlled
-// damper's three keys under front and rear): an override sets
-// them whether or not the file has them.
+// damper's three keys under front and rear): an override sets them whether or not the file has
+// them.
 using KeyOverride = std::pair<std::string, std::string>;
 
 HalfCarFile load_half_car(const std::filesystem::path& path,
                           const std::vector<KeyOverride>& overrides = {},
-                          const std::string& origin = "--set");
+                          const std::string& origin = "an override");
 
 // True when `dotted_key` names a scalar of the file, or one of the optional keys an override
 // may add (for checking a study before it runs).
