@@ -46,7 +46,7 @@ TEST(RunOutputs, AFolderIsRefusedWhenItHoldsFilesRidefitDidNotWriteThere) {
   const auto out = dir.path() / "out";
   {
     RunOutputs outputs({});
-    outputs.add_folder(out, "-o", {"report.md", "model.yaml"}, false);  // missing: fine
+    outputs.add_folder(out, "-o", {"report.md", "model.yaml"}, false, "--force");  // missing: fine
   }
   fs::create_directories(out);
   std::ofstream(out / "report.md") << "old";
@@ -54,19 +54,22 @@ TEST(RunOutputs, AFolderIsRefusedWhenItHoldsFilesRidefitDidNotWriteThere) {
   // Not listed in a manifest: someone else's file.
   EXPECT_TRUE(throws_input_error(
       [&] {
-        RunOutputs({}).add_folder(out, "-o", {"report.md", "model.yaml"}, false);
+        RunOutputs({}).add_folder(out, "-o", {"report.md", "model.yaml"}, false, "--force");
       },
-      "files ridefit did not write there (report.md)"));
-  RunOutputs({}).add_folder(out, "-o", {"report.md", "model.yaml"}, true);  // --force
+      "files ridefit did not write there (report.md); choose a new or empty folder, or give "
+      "--force to write into it anyway"));
+  RunOutputs({}).add_folder(out, "-o", {"report.md", "model.yaml"}, true, "--force");  // --force
   finish_output_folder(out, {"report.md"});
-  RunOutputs({}).add_folder(out, "-o", {"report.md", "model.yaml"}, false);  // ours now
+  RunOutputs({}).add_folder(out, "-o", {"report.md", "model.yaml"}, false, "--force");  // ours now
   // An input is never an output, not even with --force; nor are two names alike.
   EXPECT_TRUE(throws_input_error(
-      [&] { RunOutputs({out / "model.yaml"}).add_folder(out, "-o", {"model.yaml"}, true); },
+      [&] {
+        RunOutputs({out / "model.yaml"}).add_folder(out, "-o", {"model.yaml"}, true, "--force");
+      },
       "one of its inputs"));
   EXPECT_TRUE(throws_input_error(
       [&] {
-        RunOutputs({}).add_folder(out, "-o", {"a.csv", "a.csv"}, true);
+        RunOutputs({}).add_folder(out, "-o", {"a.csv", "a.csv"}, true, "--force");
       },
       "twice"));
 }

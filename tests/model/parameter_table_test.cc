@@ -3,6 +3,8 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <string>
@@ -11,6 +13,7 @@
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/model/half_car_parameter_table.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
+#include "ridefit/model/strut_test_parameter_table.h"
 #include "support/input_error_message.h"
 #include "support/passat.h"
 
@@ -51,6 +54,81 @@ TEST(ParameterTable, EveryRowHasAUniqueKeyItsUnitARangeAndAMeaning) {
   expect_well_formed(kHalfCarBodyParameters);
   expect_well_formed(kSuspendedMassParameters);
   expect_well_formed(kControlParameters);
+}
+
+// Each named row (quarter_car_rows::coulomb_force_N, ...) is a row of its table whose key is its
+// name, and every row has a name: a name bound to the wrong index would read another row.
+template <std::size_t N>
+void expect_named(const std::array<ParameterInfo, N>& table,
+                  std::initializer_list<std::pair<const ParameterInfo*, std::string_view>> named) {
+  EXPECT_EQ(named.size(), N) << "a row without a name";
+  std::set<const ParameterInfo*> seen;
+  for (const auto& [row, key] : named) {
+    SCOPED_TRACE(std::string(key));
+    EXPECT_TRUE(seen.insert(row).second) << "two names for one row";
+    EXPECT_TRUE(std::any_of(table.begin(), table.end(), [&](const auto& r) { return &r == row; }))
+        << "not a row of its table";
+    EXPECT_EQ(row->key, key);
+  }
+}
+
+TEST(ParameterTable, EachNamedRowIsTheRowOfItsKey) {
+  expect_named(
+      kQuarterCarParameters,
+      {{&quarter_car_rows::sprung_mass_kg, "sprung_mass_kg"},
+       {&quarter_car_rows::unsprung_mass_kg, "unsprung_mass_kg"},
+       {&quarter_car_rows::tyre_stiffness_N_per_m, "tyre_stiffness_N_per_m"},
+       {&quarter_car_rows::tyre_damping_Ns_per_m, "tyre_damping_Ns_per_m"},
+       {&quarter_car_rows::spring_stiffness_N_per_m, "spring_stiffness_N_per_m"},
+       {&quarter_car_rows::top_mount_spring_path_stiffness_N_per_m,
+        "top_mount_spring_path_stiffness_N_per_m"},
+       {&quarter_car_rows::top_mount_stiffness_N_per_m, "top_mount_stiffness_N_per_m"},
+       {&quarter_car_rows::damping_Ns_per_m, "damping_Ns_per_m"},
+       {&quarter_car_rows::dahl_sigma0_N_per_m, "dahl_sigma0_N_per_m"},
+       {&quarter_car_rows::coulomb_force_N, "coulomb_force_N"},
+       {&quarter_car_rows::dahl_exponent, "dahl_exponent"},
+       {&quarter_car_rows::compression_to_rebound_ratio, "compression_to_rebound_ratio"},
+       {&quarter_car_rows::top_mount_small_amplitude_stiffness_N_per_m,
+        "top_mount_small_amplitude_stiffness_N_per_m"},
+       {&quarter_car_rows::top_mount_transition_deflection_m, "top_mount_transition_deflection_m"},
+       {&quarter_car_rows::bump_stop_stiffness_N_per_m, "bump_stop_stiffness_N_per_m"},
+       {&quarter_car_rows::bump_stop_clearance_m, "bump_stop_clearance_m"},
+       {&quarter_car_rows::bump_stop_exponent, "bump_stop_exponent"},
+       {&quarter_car_rows::damper_knee_velocity_m_per_s, "damper_knee_velocity_m_per_s"},
+       {&quarter_car_rows::damping_above_knee_Ns_per_m, "damping_above_knee_Ns_per_m"},
+       {&quarter_car_rows::static_friction_force_N, "static_friction_force_N"},
+       {&quarter_car_rows::stribeck_velocity_m_per_s, "stribeck_velocity_m_per_s"},
+       {&quarter_car_rows::damping_per_command_Ns_per_m, "damping_per_command_Ns_per_m"},
+       {&quarter_car_rows::coulomb_force_per_command_N, "coulomb_force_per_command_N"},
+       {&quarter_car_rows::command_lag_s, "command_lag_s"},
+       {&quarter_car_rows::body_acc_gain, "body_acc_gain"},
+       {&quarter_car_rows::wheel_acc_gain, "wheel_acc_gain"},
+       {&quarter_car_rows::acc_sensor_cutoff_Hz, "acc_sensor_cutoff_Hz"}});
+  expect_named(kHalfCarBodyParameters,
+               {{&half_car_body_rows::body_mass_kg, "body_mass_kg"},
+                {&half_car_body_rows::pitch_inertia_kg_m2, "pitch_inertia_kg_m2"},
+                {&half_car_body_rows::front_axle_distance_m, "front_axle_distance_m"},
+                {&half_car_body_rows::rear_axle_distance_m, "rear_axle_distance_m"},
+                {&half_car_body_rows::seat_distance_m, "seat_distance_m"}});
+  expect_named(kSuspendedMassParameters,
+               {{&suspended_mass_rows::mass_kg, "mass_kg"},
+                {&suspended_mass_rows::stiffness_N_per_m, "stiffness_N_per_m"},
+                {&suspended_mass_rows::damping_Ns_per_m, "damping_Ns_per_m"}});
+  expect_named(kControlParameters,
+               {{&control_rows::min_damping_Ns_per_m, "min_damping_Ns_per_m"},
+                {&control_rows::max_damping_Ns_per_m, "max_damping_Ns_per_m"},
+                {&control_rows::skyhook_damping_Ns_per_m, "skyhook_damping_Ns_per_m"},
+                {&control_rows::groundhook_damping_Ns_per_m, "groundhook_damping_Ns_per_m"},
+                {&control_rows::skyhook_share, "skyhook_share"}});
+  expect_named(kStrutRigParameters,
+               {{&strut_rig_rows::gas_force_N, "gas_force_N"},
+                {&strut_rig_rows::gas_stiffness_N_per_m, "gas_stiffness_N_per_m"},
+                {&strut_rig_rows::force_offset_N, "force_offset_N"},
+                {&strut_rig_rows::force_gain, "force_gain"},
+                {&strut_rig_rows::force_delay_s, "force_delay_s"},
+                {&strut_rig_rows::force_sensor_cutoff_Hz, "force_sensor_cutoff_Hz"}});
+  EXPECT_EQ(quarter_car_row_index(quarter_car_rows::coulomb_force_N),
+            quarter_car_parameter_index("coulomb_force_N").value_or(kQuarterCarParameters.size()));
 }
 
 // A lone key of an optional effect needs its partner in a file; these make each row readable.

@@ -14,6 +14,7 @@
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/study/recording_analysis.h"
 #include "ridefit/study/recording_analysis_json.h"
 #include "ridefit/study/recording_figure.h"
@@ -118,9 +119,8 @@ void run(const AnalyseFlags& flags) {
       flags.level_name.find_first_not_of(
           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos) {
     throw InputError(fmt::format(
-        "--level-name '{}': use letters, digits and underscores (it names CSV columns), e.g. "
-        "coulomb_force_N",
-        flags.level_name));
+        "--level-name '{}': use letters, digits and underscores (it names CSV columns), e.g. {}",
+        flags.level_name, model::quarter_car_rows::coulomb_force_N.key));
   }
   if (!flags.levels.empty() && flags.levels.size() != flags.files.size()) {
     throw InputError(

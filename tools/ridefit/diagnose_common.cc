@@ -48,7 +48,7 @@ std::vector<std::string> check_output_folder(const DiagnoseFlags& flags,
   std::vector<std::string> files = {"report.md", "model.yaml"};
   if (io::gnuplot_available()) files.push_back(figure);
   io::RunOutputs outputs(inputs);
-  outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+  outputs.add_folder(flags.output_dir, "-o", files, flags.force, "--force");
   return files;
 }
 

@@ -22,6 +22,7 @@
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::cli {
 namespace {
@@ -96,7 +97,7 @@ void check_flag_combinations(const FitHysteresisFlags& flags,
   }
   if (!flags.compression_mm.empty() &&
       (flags.compression_mm.size() != flags.files.size() ||
-       std::ranges::count(flags.per_file, "coulomb_force_N") == 0)) {
+       std::ranges::count(flags.per_file, model::quarter_car_rows::coulomb_force_N.key) == 0)) {
     throw InputError(
         fmt::format("--compression: give one spring compression per file ({} files) and fit "
                     "coulomb_force_N per file (--per-file coulomb_force_N)",

@@ -19,6 +19,7 @@
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/io/staged_folder.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/simulate/solver_statistics_json.h"
 #include "ridefit/study/friction_study.h"
@@ -76,7 +77,7 @@ void run(const FrictionStudyFlags& flags) {
     }
   }
   for (const auto& [key, value] : parse_overrides(flags.overrides)) {
-    if (key == "coulomb_force_N") {
+    if (key == model::quarter_car_rows::coulomb_force_N.key) {
       throw InputError("--set coulomb_force_N: the study sets Fc itself; use --coulomb-forces");
     }
   }
@@ -100,7 +101,7 @@ void run(const FrictionStudyFlags& flags) {
     files.push_back(stem + "_psd.csv");
   }
   if (!flags.output_dir.empty()) {
-    outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+    outputs.add_folder(flags.output_dir, "-o", files, flags.force, "--force");
     io::prepare_output_directory(flags.output_dir, "-o");
   }
   // Written into a staged copy of the folder, put in place as a whole once every case ran.
@@ -142,7 +143,7 @@ void run(const FrictionStudyFlags& flags) {
     }
     for (const auto& c : result.cases) {
       cases.push_back(
-          {{"coulomb_force_N", c.coulomb_force_N},
+          {{model::quarter_car_rows::coulomb_force_N.key_string(), c.coulomb_force_N},
            {"body_peak_Hz", c.body_peak_Hz},
            {"wheel_peak_Hz", c.wheel_peak_Hz},
            {"body_acc_rms_m_per_s2", c.body_acc_rms_m_per_s2},

@@ -34,7 +34,7 @@ void run(const GenerateHiddenFlags& flags) {
     if (!d.strut_rig) outputs.add_input(d.excitation);
   }
   const std::vector<std::string> files = synthetic::hidden_dataset_files(datasets);
-  outputs.add_folder(flags.output_dir, "-o", files, flags.force);
+  outputs.add_folder(flags.output_dir, "-o", files, flags.force, "--force");
   // Every model and excitation is checked before anything is simulated or written.
   std::vector<synthetic::HiddenTruthModel> truths;
   for (const auto& d : datasets) truths.push_back(synthetic::load_truth_model(d));

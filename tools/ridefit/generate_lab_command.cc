@@ -21,7 +21,7 @@ struct GenerateLabFlags {
 
 void run(const GenerateLabFlags& flags) {
   const std::vector<std::string> files = synthetic::lab_test_files();
-  io::RunOutputs({}).add_folder(flags.output_dir, "DIR", files, flags.force);
+  io::RunOutputs({}).add_folder(flags.output_dir, "DIR", files, flags.force, "--force");
   io::prepare_output_directory(flags.output_dir, "DIR");
   io::StagedFolder staged(flags.output_dir, files);
   synthetic::write_lab_tests(staged.path(), flags.seed);

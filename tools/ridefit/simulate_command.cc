@@ -116,6 +116,7 @@ void simulate_half_car(const SimulateFlags& flags) {
   const auto road = road::load_excitation(flags.excitation_file);
   auto options = options_from<simulate::HalfCarSimulationOptions>(flags, *road);
   if (flags.rear_delay_s >= 0.0) options.rear_delay_s = flags.rear_delay_s;
+  options.rear_delay_name = "--rear-delay S";
   const auto [response, wall_time_s] = timed_simulation(car, *road, options);
   // The ISO 2631-1 weightings need 500 Hz (Wk); a slower run reports what it can.
   const auto metrics = flags.output_rate_Hz >= 500.0

@@ -7,6 +7,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting {
 
@@ -66,7 +67,7 @@ FrictionCompressionLine fit_friction_compression(const HysteresisFitResult& fit,
                                                  std::span<const double> compression_m) {
   std::vector<double> friction_N, standard_error_N;
   for (const auto& p : fit.parameters) {
-    if (p.name != "coulomb_force_N" || p.file.empty()) continue;
+    if (p.name != model::quarter_car_rows::coulomb_force_N.key || p.file.empty()) continue;
     friction_N.push_back(p.value);
     if (p.standard_error) standard_error_N.push_back(*p.standard_error);
   }

@@ -274,8 +274,10 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   const bool any_command = std::any_of(
       records.begin(), records.end(), [](const HysteresisRecord& r) { return !r.command.empty(); });
   for (const auto& name : options.free) {
-    if (!any_command && (name == "damping_per_command_Ns_per_m" ||
-                         name == "coulomb_force_per_command_N" || name == "command_lag_s")) {
+    namespace rows = model::quarter_car_rows;
+    if (!any_command &&
+        (name == rows::damping_per_command_Ns_per_m.key ||
+         name == rows::coulomb_force_per_command_N.key || name == rows::command_lag_s.key)) {
       throw InputError(fmt::format(
           "free parameter {}: no record has a command column (current[A] or voltage[V]); a "
           "controlled damper's law needs the command the damper was given",

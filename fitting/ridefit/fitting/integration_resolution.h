@@ -109,7 +109,7 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
 inline std::string integration_resolution_message(double cost_floor) {
   return fmt::format(
       "Converged to the integrator's resolution (cost scatter {:.3g} from the integration "
-      "error; lower --rtol to resolve further)",
+      "error; lower the relative tolerance to resolve further)",
       cost_floor);
 }
 

@@ -417,9 +417,9 @@ ceres::CostFunction* new_psd_cost(const PsdMeasurement& m, const model::QuarterC
 
 NoiseFloors noise_floors(const PsdMeasurement& m, const PsdFitOptions& options) {
   return {floor_of(options.body_noise_psd, m.body_acc_m_per_s2, m.sample_rate_Hz,
-                   options.band_high_Hz, "--body-noise-psd"),
+                   options.band_high_Hz, "body_noise_psd"),
           floor_of(options.wheel_noise_psd, m.wheel_acc_m_per_s2, m.sample_rate_Hz,
-                   options.band_high_Hz, "--wheel-noise-psd")};
+                   options.band_high_Hz, "wheel_noise_psd")};
 }
 
 std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::QuarterCar& given_car,

@@ -35,22 +35,22 @@ struct StrutParameterInfo {
 // below its bound: fitting it needs a start). The load cell's chain (gain, delay, cutoff) is
 // rig-only; a cutoff of 0 is off and below its bound likewise.
 inline constexpr std::array<StrutParameterInfo, 16> kStrutParameters{{
-    {&model::quarter_car_row("dahl_sigma0_N_per_m"), 1e3, 1e10, true},
-    {&model::quarter_car_row("coulomb_force_N"), 0.0, 1e4, true},
-    {&model::quarter_car_row("dahl_exponent"), 0.2, 5.0, true},
-    {&model::quarter_car_row("top_mount_stiffness_N_per_m"), 1e3, 1e10, true},
-    {&model::quarter_car_row("damping_Ns_per_m"), 1.0, 1e6, true},
-    {&model::strut_rig_row("gas_force_N"), -1e4, 1e4, false},
-    {&model::strut_rig_row("gas_stiffness_N_per_m"), -1e6, 1e6, false},
-    {&model::strut_rig_row("force_offset_N"), -1e4, 1e4, false},
-    {&model::quarter_car_row("static_friction_force_N"), 0.0, 1e4, true},
-    {&model::quarter_car_row("stribeck_velocity_m_per_s"), 1e-5, 10.0, true},
-    {&model::quarter_car_row("damping_per_command_Ns_per_m"), -1e5, 1e6, true},
-    {&model::quarter_car_row("coulomb_force_per_command_N"), -1e4, 1e4, true},
-    {&model::quarter_car_row("command_lag_s"), 1e-4, 1.0, true},
-    {&model::strut_rig_row("force_gain"), 0.5, 2.0, false},
-    {&model::strut_rig_row("force_delay_s"), 0.0, 0.1, false},
-    {&model::strut_rig_row("force_sensor_cutoff_Hz"), 1.0, 1e5, false},
+    {&model::quarter_car_rows::dahl_sigma0_N_per_m, 1e3, 1e10, true},
+    {&model::quarter_car_rows::coulomb_force_N, 0.0, 1e4, true},
+    {&model::quarter_car_rows::dahl_exponent, 0.2, 5.0, true},
+    {&model::quarter_car_rows::top_mount_stiffness_N_per_m, 1e3, 1e10, true},
+    {&model::quarter_car_rows::damping_Ns_per_m, 1.0, 1e6, true},
+    {&model::strut_rig_rows::gas_force_N, -1e4, 1e4, false},
+    {&model::strut_rig_rows::gas_stiffness_N_per_m, -1e6, 1e6, false},
+    {&model::strut_rig_rows::force_offset_N, -1e4, 1e4, false},
+    {&model::quarter_car_rows::static_friction_force_N, 0.0, 1e4, true},
+    {&model::quarter_car_rows::stribeck_velocity_m_per_s, 1e-5, 10.0, true},
+    {&model::quarter_car_rows::damping_per_command_Ns_per_m, -1e5, 1e6, true},
+    {&model::quarter_car_rows::coulomb_force_per_command_N, -1e4, 1e4, true},
+    {&model::quarter_car_rows::command_lag_s, 1e-4, 1.0, true},
+    {&model::strut_rig_rows::force_gain, 0.5, 2.0, false},
+    {&model::strut_rig_rows::force_delay_s, 0.0, 0.1, false},
+    {&model::strut_rig_rows::force_sensor_cutoff_Hz, 1.0, 1e5, false},
 }};
 
 // The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas

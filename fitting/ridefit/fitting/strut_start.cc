@@ -44,11 +44,15 @@ std::map<std::string, double> estimate_strut_start(const std::vector<HysteresisR
   const bool slope_seen =
       std::sqrt(speed_squares / static_cast<double>(rows.size())) > 0.2 * mean_speed;
   // Columns: 1, x, sgn v, [v], [u·sgn v, [u·v]].
-  std::vector<std::string> names = {"force_offset_N", "gas_stiffness_N_per_m", "coulomb_force_N"};
-  if (slope_seen) names.push_back("damping_Ns_per_m");
+  namespace qc = model::quarter_car_rows;
+  namespace rig = model::strut_rig_rows;
+  std::vector<std::string> names = {rig::force_offset_N.key_string(),
+                                    rig::gas_stiffness_N_per_m.key_string(),
+                                    qc::coulomb_force_N.key_string()};
+  if (slope_seen) names.push_back(qc::damping_Ns_per_m.key_string());
   if (commanded) {
-    names.push_back("coulomb_force_per_command_N");
-    if (slope_seen) names.push_back("damping_per_command_Ns_per_m");
+    names.push_back(qc::coulomb_force_per_command_N.key_string());
+    if (slope_seen) names.push_back(qc::damping_per_command_Ns_per_m.key_string());
   }
   Eigen::MatrixXd a(static_cast<Eigen::Index>(rows.size()),
                     static_cast<Eigen::Index>(names.size()));
@@ -81,7 +85,8 @@ std::map<std::string, double> estimate_strut_start(const std::vector<HysteresisR
     const auto c = static_cast<Eigen::Index>(i);
     const double value = norms(c) > 0.0 ? solution(c) / norms(c) : 0.0;
     if (!std::isfinite(value)) continue;
-    if ((names[i] == "coulomb_force_N" || names[i] == "damping_Ns_per_m") && !(value > 0.0)) {
+    if ((names[i] == qc::coulomb_force_N.key || names[i] == qc::damping_Ns_per_m.key) &&
+        !(value > 0.0)) {
       continue;
     }
     estimate[names[i]] = value;

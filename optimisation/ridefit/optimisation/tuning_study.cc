@@ -28,8 +28,10 @@ namespace ridefit::optimisation {
 namespace {
 
 constexpr std::size_t kMaxLoadCases = 1000;
-const std::vector<std::string> kFrictionKeys = {"dahl_sigma0_N_per_m", "coulomb_force_N",
-                                                "dahl_exponent"};
+namespace rows = model::quarter_car_rows;
+// The friction section's keys: the Dahl element's.
+constexpr const model::ParameterInfo* kFrictionRows[] = {
+    &rows::dahl_sigma0_N_per_m, &rows::coulomb_force_N, &rows::dahl_exponent};
 
 Aggregate read_aggregate(const io::YamlMap& map, Aggregate fallback) {
   if (!map.has("aggregate")) return fallback;
@@ -62,7 +64,7 @@ std::optional<double> model_value(const StudyModel& model, const TuningStudy& st
       std::find(model.file_keys.begin(), model.file_keys.end(), key) != model.file_keys.end() ||
       std::any_of(study.model_settings.begin(), study.model_settings.end(),
                   [&](const auto& setting) { return setting.first == key; });
-  if (!given && !key.ends_with("compression_to_rebound_ratio")) return std::nullopt;
+  if (!given && !key.ends_with(rows::compression_to_rebound_ratio.key)) return std::nullopt;
   TuningModel base = model.base;
   if (base.quarter) {
     const auto index = model::quarter_car_parameter_index(key);
@@ -166,10 +168,10 @@ LoadCase read_load_case(const io::YamlMap& entry, std::size_t index) {
 void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningStudy& study) {
   std::vector<ModelValue> values;
   if (friction.has("fitted_model")) {
-    for (const auto& key : kFrictionKeys) {
-      if (friction.has(key)) {
+    for (const auto* row : kFrictionRows) {
+      if (friction.has(*row)) {
         throw InputError(fmt::format("{}: give fitted_model or friction values, not both",
-                                     friction.locate(key)));
+                                     friction.locate(*row)));
       }
     }
     study.fitted_model = friction.file("fitted_model");
@@ -181,21 +183,25 @@ void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningS
           fmt::format("{}: a fitted quarter-car model is needed (as `ridefit fit` writes it): {}",
                       friction.locate("fitted_model"), e.what()));
     }
-    values = {{"dahl_sigma0_N_per_m", fitted.parameters.dahl_sigma0_N_per_m},
-              {"coulomb_force_N", fitted.parameters.coulomb_force_N},
-              {"dahl_exponent", fitted.parameters.dahl_exponent}};
+    values = {{rows::dahl_sigma0_N_per_m.key_string(), fitted.parameters.dahl_sigma0_N_per_m},
+              {rows::coulomb_force_N.key_string(), fitted.parameters.coulomb_force_N},
+              {rows::dahl_exponent.key_string(), fitted.parameters.dahl_exponent}};
   } else {
-    if (friction.has("dahl_sigma0_N_per_m"))
-      values.emplace_back("dahl_sigma0_N_per_m", friction.positive("dahl_sigma0_N_per_m"));
-    if (friction.has("coulomb_force_N"))
-      values.emplace_back("coulomb_force_N", friction.non_negative_up_to("coulomb_force_N", 1e4));
-    if (friction.has("dahl_exponent"))
-      values.emplace_back("dahl_exponent", friction.number_in("dahl_exponent", 0.2, 5.0));
+    const auto& sigma0 = rows::dahl_sigma0_N_per_m;
+    const auto& fc = rows::coulomb_force_N;
+    const auto& exponent = rows::dahl_exponent;
+    if (friction.has(sigma0)) {
+      values.emplace_back(sigma0.key, friction.positive(sigma0.key_string()));
+    }
+    if (friction.has(fc)) values.emplace_back(fc.key, friction.parameter(fc));
+    if (friction.has(exponent)) {
+      values.emplace_back(exponent.key, friction.number_in(exponent.key_string(), 0.2, 5.0));
+    }
     if (values.empty()) {
       throw InputError(fmt::format(
           "{}: give coulomb_force_N (and optionally dahl_sigma0_N_per_m, dahl_exponent) or "
           "fitted_model",
-          friction.locate("coulomb_force_N")));
+          friction.locate(rows::coulomb_force_N)));
     }
   }
   friction.finish();
@@ -205,7 +211,7 @@ void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningS
       throw InputError(
           fmt::format("{}: model {} has no friction element (damper_state {}); "
                       "friction needs damper_state: stick_slip",
-                      friction.locate("coulomb_force_N"), study.model_file.string(),
+                      friction.locate(rows::coulomb_force_N), study.model_file.string(),
                       model::to_string(model.damper_state)));
     }
     study.friction_values = values;
@@ -225,7 +231,7 @@ void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningS
     throw InputError(fmt::format(
         "{}: model {} has no stick/slip strut; friction needs an axle with suspension: strut "
         "and damper_state: stick_slip",
-        friction.locate("coulomb_force_N"), study.model_file.string()));
+        friction.locate(rows::coulomb_force_N), study.model_file.string()));
   }
 }
 

@@ -185,7 +185,7 @@ std::pair<int, std::string> run_gnuplot(const fs::path& script, const fs::path& 
   if (program.empty()) {
     throw RunError(
         "gnuplot could not be started; install it (tools/setup installs the Debian package "
-        "gnuplot-nox) or leave out --plot");
+        "gnuplot-nox) or draw no figure");
   }
   std::string script_arg = script.string();
   const std::string log_path = log.string();

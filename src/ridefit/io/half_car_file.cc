@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <sstream>
+#include <string_view>
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/quarter_car_file.h"
@@ -13,12 +14,7 @@
 namespace ridefit::io {
 namespace {
 
-// Row i of one of model/half_car_parameter_table.h's tables, within its range (the axles' keys
-// are quarter-car rows, model::quarter_car_row).
-template <std::size_t N>
-double read(const YamlMap& map, const std::array<model::ParameterInfo, N>& rows, std::size_t i) {
-  return map.parameter(rows[i]);
-}
+namespace axle_rows = model::quarter_car_rows;
 
 constexpr double kSymmetricDamper = 1.0;
 
@@ -28,9 +24,9 @@ constexpr double kSymmetricDamper = 1.0;
 // control section are optional too, but only as a group (a lone coulomb_force_N has no
 // sensible partners), so they are not here.
 constexpr const char* kAxles[] = {"front", "rear"};
-constexpr const char* kOptionalAxleKeys[] = {"compression_to_rebound_ratio",
-                                             "damping_per_command_Ns_per_m",
-                                             "coulomb_force_per_command_N", "command_lag_s"};
+constexpr std::string_view kOptionalAxleKeys[] = {
+    axle_rows::compression_to_rebound_ratio.key, axle_rows::damping_per_command_Ns_per_m.key,
+    axle_rows::coulomb_force_per_command_N.key, axle_rows::command_lag_s.key};
 
 std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlMap& axle) {
   model::AxleTopology topology;
@@ -43,54 +39,50 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
     topology.damper_state =
         parse_damper_state(axle.text("damper_state"), axle.locate("damper_state"));
   }
-  p.unsprung_mass_kg = axle.parameter(model::quarter_car_row("unsprung_mass_kg"));
-  p.tyre_stiffness_N_per_m = axle.parameter(model::quarter_car_row("tyre_stiffness_N_per_m"));
-  p.tyre_damping_Ns_per_m = axle.parameter(model::quarter_car_row("tyre_damping_Ns_per_m"));
-  p.spring_stiffness_N_per_m = axle.parameter(model::quarter_car_row("spring_stiffness_N_per_m"));
+  p.unsprung_mass_kg = axle.parameter(axle_rows::unsprung_mass_kg);
+  p.tyre_stiffness_N_per_m = axle.parameter(axle_rows::tyre_stiffness_N_per_m);
+  p.tyre_damping_Ns_per_m = axle.parameter(axle_rows::tyre_damping_Ns_per_m);
+  p.spring_stiffness_N_per_m = axle.parameter(axle_rows::spring_stiffness_N_per_m);
   // A strut's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0 there.
-  p.damping_Ns_per_m =
-      strut ? axle.parameter(model::quarter_car_row("damping_Ns_per_m"))
-            : axle.non_negative_up_to("damping_Ns_per_m",
-                                      model::quarter_car_row("damping_Ns_per_m").upper);
+  p.damping_Ns_per_m = strut ? axle.parameter(axle_rows::damping_Ns_per_m)
+                             : axle.non_negative_up_to(axle_rows::damping_Ns_per_m.key_string(),
+                                                       axle_rows::damping_Ns_per_m.upper);
   // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it.
   p.compression_to_rebound_ratio = kSymmetricDamper;
-  if (axle.has("compression_to_rebound_ratio")) {
-    p.compression_to_rebound_ratio =
-        axle.parameter(model::quarter_car_row("compression_to_rebound_ratio"));
+  if (axle.has(axle_rows::compression_to_rebound_ratio)) {
+    p.compression_to_rebound_ratio = axle.parameter(axle_rows::compression_to_rebound_ratio);
   }
   p.top_mount_stiffness_N_per_m = 1.0;
-  if (strut || axle.has("top_mount_stiffness_N_per_m")) {
-    p.top_mount_stiffness_N_per_m =
-        axle.parameter(model::quarter_car_row("top_mount_stiffness_N_per_m"));
+  if (strut || axle.has(axle_rows::top_mount_stiffness_N_per_m)) {
+    p.top_mount_stiffness_N_per_m = axle.parameter(axle_rows::top_mount_stiffness_N_per_m);
   }
   const bool friction = strut && topology.damper_state == model::DamperState::kStickSlip;
   p.dahl_sigma0_N_per_m = 1.0;
   p.coulomb_force_N = 0.0;
   p.dahl_exponent = 1.0;
-  if (friction || axle.has("dahl_sigma0_N_per_m") || axle.has("coulomb_force_N") ||
-      axle.has("dahl_exponent")) {
-    p.dahl_sigma0_N_per_m = axle.parameter(model::quarter_car_row("dahl_sigma0_N_per_m"));
-    p.coulomb_force_N = axle.parameter(model::quarter_car_row("coulomb_force_N"));
-    p.dahl_exponent = axle.parameter(model::quarter_car_row("dahl_exponent"));
+  if (friction || axle.has(axle_rows::dahl_sigma0_N_per_m) ||
+      axle.has(axle_rows::coulomb_force_N) || axle.has(axle_rows::dahl_exponent)) {
+    p.dahl_sigma0_N_per_m = axle.parameter(axle_rows::dahl_sigma0_N_per_m);
+    p.coulomb_force_N = axle.parameter(axle_rows::coulomb_force_N);
+    p.dahl_exponent = axle.parameter(axle_rows::dahl_exponent);
   }
   // A controlled damper (the same keys and limits as the quarter car's).
-  if (axle.has("damping_per_command_Ns_per_m")) {
-    p.damping_per_command_Ns_per_m =
-        axle.parameter(model::quarter_car_row("damping_per_command_Ns_per_m"));
+  if (axle.has(axle_rows::damping_per_command_Ns_per_m)) {
+    p.damping_per_command_Ns_per_m = axle.parameter(axle_rows::damping_per_command_Ns_per_m);
   }
-  if (axle.has("coulomb_force_per_command_N")) {
-    p.coulomb_force_per_command_N =
-        axle.parameter(model::quarter_car_row("coulomb_force_per_command_N"));
+  if (axle.has(axle_rows::coulomb_force_per_command_N)) {
+    p.coulomb_force_per_command_N = axle.parameter(axle_rows::coulomb_force_per_command_N);
   }
-  if (axle.has("command_lag_s"))
-    p.command_lag_s = axle.parameter(model::quarter_car_row("command_lag_s"));
+  if (axle.has(axle_rows::command_lag_s))
+    p.command_lag_s = axle.parameter(axle_rows::command_lag_s);
   axle.finish();
   return {topology, p};
 }
 
 model::SuspendedMass<double> read_mass(const YamlMap& m) {
-  const auto& rows = model::kSuspendedMassParameters;
-  return {read(m, rows, 0), read(m, rows, 1), read(m, rows, 2)};
+  namespace rows = model::suspended_mass_rows;
+  return {m.parameter(rows::mass_kg), m.parameter(rows::stiffness_N_per_m),
+          m.parameter(rows::damping_Ns_per_m)};
 }
 
 // The limits and gains are required where the law uses them and checked wherever given, so a
@@ -103,31 +95,30 @@ model::SemiActiveControl read_control(const YamlMap& c) {
                 : law == "groundhook" ? model::ControlLaw::kGroundhook
                                       : model::ControlLaw::kHybrid;
   const bool active = control.law != model::ControlLaw::kPassive;
-  // Rows 0-3 of model::kControlParameters: the two limits and the two laws' coefficients.
-  const auto& rows = model::kControlParameters;
-  auto read_if = [&](std::size_t row, bool required, double& value) {
-    if (required || c.has(std::string(rows[row].key))) value = c.parameter(rows[row]);
+  namespace rows = model::control_rows;
+  auto read_if = [&](const model::ParameterInfo& row, bool required, double& value) {
+    if (required || c.has(row)) value = c.parameter(row);
   };
-  read_if(0, active, control.min_damping_Ns_per_m);
-  read_if(1, active, control.max_damping_Ns_per_m);
+  read_if(rows::min_damping_Ns_per_m, active, control.min_damping_Ns_per_m);
+  read_if(rows::max_damping_Ns_per_m, active, control.max_damping_Ns_per_m);
   if (control.min_damping_Ns_per_m > control.max_damping_Ns_per_m) {
-    throw InputError(fmt::format(
-        "{} is {} Ns/m, above max_damping_Ns_per_m {} Ns/m; a damper's limits need c_min <= "
-        "c_max",
-        c.locate("min_damping_Ns_per_m"), control.min_damping_Ns_per_m,
-        control.max_damping_Ns_per_m));
+    throw InputError(
+        fmt::format("{} is {} Ns/m, above {} {} Ns/m; a damper's limits need c_min <= c_max",
+                    c.locate(rows::min_damping_Ns_per_m), control.min_damping_Ns_per_m,
+                    rows::max_damping_Ns_per_m.key, control.max_damping_Ns_per_m));
   }
   if (active && !(control.max_damping_Ns_per_m > 0.0)) {
     throw InputError(
-        fmt::format("{} must be > 0 for a {} damper", c.locate("max_damping_Ns_per_m"), law));
+        fmt::format("{} must be > 0 for a {} damper", c.locate(rows::max_damping_Ns_per_m), law));
   }
-  read_if(2,
+  read_if(rows::skyhook_damping_Ns_per_m,
           control.law == model::ControlLaw::kSkyhook || control.law == model::ControlLaw::kHybrid,
           control.skyhook_damping_Ns_per_m);
   read_if(
-      3, control.law == model::ControlLaw::kGroundhook || control.law == model::ControlLaw::kHybrid,
+      rows::groundhook_damping_Ns_per_m,
+      control.law == model::ControlLaw::kGroundhook || control.law == model::ControlLaw::kHybrid,
       control.groundhook_damping_Ns_per_m);
-  read_if(4, control.law == model::ControlLaw::kHybrid, control.skyhook_share);
+  read_if(rows::skyhook_share, control.law == model::ControlLaw::kHybrid, control.skyhook_share);
   c.finish();
   return control;
 }
@@ -136,12 +127,12 @@ HalfCarFile read_half_car(const YamlMap& file) {
   file.choice("model", {"half_car"});
   HalfCarFile result{};
   auto& p = result.parameters;
-  const auto& body = model::kHalfCarBodyParameters;
-  p.body_mass_kg = read(file, body, 0);
-  p.pitch_inertia_kg_m2 = read(file, body, 1);
-  p.front_axle_distance_m = read(file, body, 2);
-  p.rear_axle_distance_m = read(file, body, 3);
-  p.seat_distance_m = read(file, body, 4);
+  namespace body = model::half_car_body_rows;
+  p.body_mass_kg = file.parameter(body::body_mass_kg);
+  p.pitch_inertia_kg_m2 = file.parameter(body::pitch_inertia_kg_m2);
+  p.front_axle_distance_m = file.parameter(body::front_axle_distance_m);
+  p.rear_axle_distance_m = file.parameter(body::rear_axle_distance_m);
+  p.seat_distance_m = file.parameter(body::seat_distance_m);
   std::tie(result.topology.front, p.front) = read_axle(file.map("front"));
   std::tie(result.topology.rear, p.rear) = read_axle(file.map("rear"));
   const YamlMap seat = file.map("seat");
@@ -165,10 +156,11 @@ HalfCarFile read_half_car(const YamlMap& file) {
       if (axle->commanded() && axle->damping_per_command_Ns_per_m == 0.0) {
         const YamlMap section = file.map(name);
         throw InputError(fmt::format(
-            "{}: {}.coulomb_force_per_command_N without {}.damping_per_command_Ns_per_m: the "
-            "control law sets the damping through the command, u = (c_law - c)/c_b, so give the "
-            "damper's damping slope c_b (N*s/m per A or V, not 0)",
-            section.locate("coulomb_force_per_command_N"), name, name));
+            "{}: {}.{} without {}.{}: the control law sets the damping through the command, u = "
+            "(c_law - c)/c_b, so give the damper's damping slope c_b (N*s/m per A or V, not 0)",
+            section.locate(axle_rows::coulomb_force_per_command_N), name,
+            axle_rows::coulomb_force_per_command_N.key, name,
+            axle_rows::damping_per_command_Ns_per_m.key));
       }
     }
   }
@@ -200,7 +192,7 @@ bool optional_key(const std::vector<std::string>& parts) {
   if (parts.size() != 2) return false;
   bool axle = false, key = false;
   for (const char* a : kAxles) axle = axle || parts[0] == a;
-  for (const char* k : kOptionalAxleKeys) key = key || parts[1] == k;
+  for (const std::string_view k : kOptionalAxleKeys) key = key || parts[1] == k;
   return axle && key;
 }
 
@@ -238,9 +230,9 @@ HalfCarFile load_half_car(const std::filesystem::path& path, const ModelOverride
     } else {
       throw InputError(
           fmt::format("'{}' is not a key of {}: use a dotted path to a key the file has, e.g. "
-                      "front.damping_Ns_per_m, or an optional one such as "
-                      "front.compression_to_rebound_ratio ({} {}={})",
-                      key, path.string(), overrides.origin, key, value));
+                      "front.{}, or an optional one such as front.{} ({} {}={})",
+                      key, path.string(), axle_rows::damping_Ns_per_m.key,
+                      axle_rows::compression_to_rebound_ratio.key, overrides.origin, key, value));
     }
   }
   try {

@@ -92,7 +92,8 @@ void RunOutputs::add_plot(const fs::path& path, const std::string& flag) {
 }
 
 void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
-                            const std::vector<std::string>& files, bool force) {
+                            const std::vector<std::string>& files, bool force,
+                            const std::string& force_flag) {
   for (const auto& input : inputs_) {
     if (same_file(input, dir)) {
       throw InputError(fmt::format("{} {}: that is an input of this run", flag, dir.string()));
@@ -139,8 +140,8 @@ void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
   if (foreign.size() > 5) list += fmt::format(" and {} more", foreign.size() - 5);
   throw InputError(fmt::format(
       "{} {}: the folder holds files ridefit did not write there ({}); choose a new or empty "
-      "folder, or give --force to write into it anyway (files of the same name are replaced)",
-      flag, dir.string(), list));
+      "folder, or give {} to write into it anyway (files of the same name are replaced)",
+      flag, dir.string(), list, force_flag));
 }
 
 void finish_output_folder(const fs::path& dir, const std::vector<std::string>& files) {

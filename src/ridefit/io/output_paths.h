@@ -46,10 +46,11 @@ class RunOutputs {
 
   // An output folder and the names of the files the run writes into it (no two alike). The
   // folder may be missing or empty, or hold only files a ridefit run listed in its manifest
-  // (kOutputManifest); any other file is refused unless `force`. No input may be one of the
-  // files the run writes, even with `force`. The folder is not created here.
+  // (kOutputManifest); any other file is refused unless `force`, which the refusal names as
+  // `force_flag` (e.g. "--force"). No input may be one of the files the run writes, even with
+  // `force`. The folder is not created here.
   void add_folder(const std::filesystem::path& dir, const std::string& flag,
-                  const std::vector<std::string>& files, bool force);
+                  const std::vector<std::string>& files, bool force, const std::string& force_flag);
 
  private:
   struct Output {

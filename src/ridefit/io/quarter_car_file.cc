@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <string_view>
+
 #include "ridefit/common/errors.h"
 #include "ridefit/io/yaml_map.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
@@ -18,22 +20,25 @@ model::DamperState parse_damper_state(const std::string& text, const std::string
 
 namespace {
 
+namespace rows = model::quarter_car_rows;
+
 // `key` is only meaningful together with `needed`: name both when `needed` is missing.
-void require_with(const YamlMap& file, const std::string& key, const std::string& needed,
+void require_with(const YamlMap& file, std::string_view key, std::string_view needed,
                   const std::string& why) {
-  if (!file.has(needed)) {
-    throw InputError(
-        fmt::format("{} needs the key '{}' as well ({})", file.locate(key), needed, why));
+  if (!file.has(std::string(needed))) {
+    throw InputError(fmt::format("{} needs the key '{}' as well ({})",
+                                 file.locate(std::string(key)), needed, why));
   }
 }
 
-// A number in [lo, hi] where lo is another key's value: the message says which and why.
-double number_from(const YamlMap& file, const std::string& key, double lo, double hi,
+// A number in [lo, row's upper limit] where lo is another key's value: the message says which
+// and why.
+double number_from(const YamlMap& file, const model::ParameterInfo& row, double lo,
                    const std::string& rule) {
-  const double v = file.number(key);
-  if (v < lo || v > hi) {
-    throw InputError(fmt::format("{} is {}, expected a value in [{}, {:g}] ({})", file.locate(key),
-                                 v, lo, hi, rule));
+  const double v = file.number(row);
+  if (v < lo || v > row.upper) {
+    throw InputError(fmt::format("{} is {}, expected a value in [{}, {:g}] ({})", file.locate(row),
+                                 v, lo, row.upper, rule));
   }
   return v;
 }
@@ -41,35 +46,34 @@ double number_from(const YamlMap& file, const std::string& key, double lo, doubl
 // The optional physical effects, each off when its keys are absent (quarter_car_file.h).
 void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<double>& p) {
   // 1. Top mount stiffer at small amplitude: k_s ≥ k_l and δ0 > 0, both or neither.
-  const bool stiffening = file.has("top_mount_small_amplitude_stiffness_N_per_m") ||
-                          file.has("top_mount_transition_deflection_m");
+  const bool stiffening = file.has(rows::top_mount_small_amplitude_stiffness_N_per_m) ||
+                          file.has(rows::top_mount_transition_deflection_m);
   if (stiffening) {
-    require_with(file, "top_mount_small_amplitude_stiffness_N_per_m",
-                 "top_mount_transition_deflection_m", "the deflection where the stiffening fades");
-    require_with(file, "top_mount_transition_deflection_m",
-                 "top_mount_small_amplitude_stiffness_N_per_m", "the stiffness at zero deflection");
+    require_with(file, rows::top_mount_small_amplitude_stiffness_N_per_m.key,
+                 rows::top_mount_transition_deflection_m.key,
+                 "the deflection where the stiffening fades");
+    require_with(file, rows::top_mount_transition_deflection_m.key,
+                 rows::top_mount_small_amplitude_stiffness_N_per_m.key,
+                 "the stiffness at zero deflection");
     p.top_mount_small_amplitude_stiffness_N_per_m = number_from(
-        file, "top_mount_small_amplitude_stiffness_N_per_m", p.top_mount_stiffness_N_per_m,
-        model::quarter_car_row("top_mount_small_amplitude_stiffness_N_per_m").upper,
+        file, rows::top_mount_small_amplitude_stiffness_N_per_m, p.top_mount_stiffness_N_per_m,
         "at least top_mount_stiffness_N_per_m, the large-amplitude stiffness");
-    p.top_mount_transition_deflection_m =
-        file.parameter(model::quarter_car_row("top_mount_transition_deflection_m"));
+    p.top_mount_transition_deflection_m = file.parameter(rows::top_mount_transition_deflection_m);
   }
   // 2. Bump stop: stiffness and clearance together, the exponent optional (default 2).
-  if (file.has("bump_stop_stiffness_N_per_m") || file.has("bump_stop_clearance_m") ||
-      file.has("bump_stop_exponent")) {
-    const std::string given = file.has("bump_stop_stiffness_N_per_m")
-                                  ? "bump_stop_stiffness_N_per_m"
-                              : file.has("bump_stop_clearance_m") ? "bump_stop_clearance_m"
-                                                                  : "bump_stop_exponent";
-    require_with(file, given, "bump_stop_stiffness_N_per_m", "the stop's secant stiffness");
-    require_with(file, given, "bump_stop_clearance_m", "the compression at first contact");
-    p.bump_stop_stiffness_N_per_m =
-        file.parameter(model::quarter_car_row("bump_stop_stiffness_N_per_m"));
-    p.bump_stop_clearance_m = file.parameter(model::quarter_car_row("bump_stop_clearance_m"));
+  if (file.has(rows::bump_stop_stiffness_N_per_m) || file.has(rows::bump_stop_clearance_m) ||
+      file.has(rows::bump_stop_exponent)) {
+    const std::string_view given =
+        file.has(rows::bump_stop_stiffness_N_per_m) ? rows::bump_stop_stiffness_N_per_m.key
+        : file.has(rows::bump_stop_clearance_m)     ? rows::bump_stop_clearance_m.key
+                                                    : rows::bump_stop_exponent.key;
+    require_with(file, given, rows::bump_stop_stiffness_N_per_m.key, "the stop's secant stiffness");
+    require_with(file, given, rows::bump_stop_clearance_m.key, "the compression at first contact");
+    p.bump_stop_stiffness_N_per_m = file.parameter(rows::bump_stop_stiffness_N_per_m);
+    p.bump_stop_clearance_m = file.parameter(rows::bump_stop_clearance_m);
     p.bump_stop_exponent = 2.0;
-    if (file.has("bump_stop_exponent")) {
-      p.bump_stop_exponent = file.parameter(model::quarter_car_row("bump_stop_exponent"));
+    if (file.has(rows::bump_stop_exponent)) {
+      p.bump_stop_exponent = file.parameter(rows::bump_stop_exponent);
     }
   }
   // 3. Tyre lift-off: true | false, or 1 | 0 (what --set tyre_lift_off=1 writes).
@@ -78,40 +82,38 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
     p.tyre_lift_off = text == "true" || text == "1";
   }
   // 4. Damper blow-off knee: v_k > 0 and 0 < c_h ≤ c_r, both or neither.
-  if (file.has("damper_knee_velocity_m_per_s") || file.has("damping_above_knee_Ns_per_m")) {
-    require_with(file, "damper_knee_velocity_m_per_s", "damping_above_knee_Ns_per_m",
-                 "the slope above the knee");
-    require_with(file, "damping_above_knee_Ns_per_m", "damper_knee_velocity_m_per_s",
-                 "where the slope changes");
-    p.damper_knee_velocity_m_per_s =
-        file.parameter(model::quarter_car_row("damper_knee_velocity_m_per_s"));
+  if (file.has(rows::damper_knee_velocity_m_per_s) || file.has(rows::damping_above_knee_Ns_per_m)) {
+    require_with(file, rows::damper_knee_velocity_m_per_s.key,
+                 rows::damping_above_knee_Ns_per_m.key, "the slope above the knee");
+    require_with(file, rows::damping_above_knee_Ns_per_m.key,
+                 rows::damper_knee_velocity_m_per_s.key, "where the slope changes");
+    p.damper_knee_velocity_m_per_s = file.parameter(rows::damper_knee_velocity_m_per_s);
     // Digressive only: a slope above the knee greater than c_r would be a progressive damper.
-    p.damping_above_knee_Ns_per_m = file.number("damping_above_knee_Ns_per_m");
+    p.damping_above_knee_Ns_per_m = file.number(rows::damping_above_knee_Ns_per_m);
     if (!(p.damping_above_knee_Ns_per_m > 0.0) ||
         p.damping_above_knee_Ns_per_m > p.damping_Ns_per_m) {
       throw InputError(fmt::format(
           "{} is {}, expected a value > 0 and <= {} (at most damping_Ns_per_m: the knee is "
           "digressive)",
-          file.locate("damping_above_knee_Ns_per_m"), p.damping_above_knee_Ns_per_m,
+          file.locate(rows::damping_above_knee_Ns_per_m), p.damping_above_knee_Ns_per_m,
           p.damping_Ns_per_m));
     }
   }
   // 5. Stribeck level of the Dahl element: v_s > 0 switches it on, Fs ≥ Fc (default Fc). Fs = Fc
   // also while it is off, so a fit that frees only v_s starts from a flat curve, not from Fs = 0.
   p.static_friction_force_N = p.coulomb_force_N;
-  if (file.has("stribeck_velocity_m_per_s") || file.has("static_friction_force_N")) {
-    require_with(file, "static_friction_force_N", "stribeck_velocity_m_per_s",
+  if (file.has(rows::stribeck_velocity_m_per_s) || file.has(rows::static_friction_force_N)) {
+    require_with(file, rows::static_friction_force_N.key, rows::stribeck_velocity_m_per_s.key,
                  "the sliding velocity over which Fs falls to coulomb_force_N");
-    p.stribeck_velocity_m_per_s =
-        file.parameter(model::quarter_car_row("stribeck_velocity_m_per_s"));
+    p.stribeck_velocity_m_per_s = file.parameter(rows::stribeck_velocity_m_per_s);
     if (!(p.coulomb_force_N > 0.0)) {
       throw InputError(fmt::format("{} needs Dahl friction: coulomb_force_N > 0 (it is {})",
-                                   file.locate("stribeck_velocity_m_per_s"), p.coulomb_force_N));
+                                   file.locate(rows::stribeck_velocity_m_per_s),
+                                   p.coulomb_force_N));
     }
-    if (file.has("static_friction_force_N")) {
+    if (file.has(rows::static_friction_force_N)) {
       p.static_friction_force_N = number_from(
-          file, "static_friction_force_N", p.coulomb_force_N,
-          model::quarter_car_row("static_friction_force_N").upper,
+          file, rows::static_friction_force_N, p.coulomb_force_N,
           "at least coulomb_force_N: friction breaks away at or above its sliding level");
     }
   }
@@ -119,32 +121,29 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
 
 // 6. Controlled damper: each key optional (0 = off).
 void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<double>& p) {
-  if (file.has("damping_per_command_Ns_per_m")) {
-    p.damping_per_command_Ns_per_m =
-        file.parameter(model::quarter_car_row("damping_per_command_Ns_per_m"));
+  if (file.has(rows::damping_per_command_Ns_per_m)) {
+    p.damping_per_command_Ns_per_m = file.parameter(rows::damping_per_command_Ns_per_m);
   }
-  if (file.has("coulomb_force_per_command_N")) {
-    p.coulomb_force_per_command_N =
-        file.parameter(model::quarter_car_row("coulomb_force_per_command_N"));
+  if (file.has(rows::coulomb_force_per_command_N)) {
+    p.coulomb_force_per_command_N = file.parameter(rows::coulomb_force_per_command_N);
   }
-  if (file.has("command_lag_s"))
-    p.command_lag_s = file.parameter(model::quarter_car_row("command_lag_s"));
+  if (file.has(rows::command_lag_s)) p.command_lag_s = file.parameter(rows::command_lag_s);
 }
 
 // 7. The accelerometers' measuring chain (acceleration_sensors.h), each key optional: gains
 // (default 1), a low-pass cutoff (default 0 = none) and its order (1 or 2, only with a cutoff).
 void read_acceleration_sensors(const YamlMap& file, model::AccelerationSensors<double>& s) {
-  if (file.has("body_acc_gain")) {
-    s.body_acc_gain = file.parameter(model::quarter_car_row("body_acc_gain"));
+  if (file.has(rows::body_acc_gain)) {
+    s.body_acc_gain = file.parameter(rows::body_acc_gain);
   }
-  if (file.has("wheel_acc_gain")) {
-    s.wheel_acc_gain = file.parameter(model::quarter_car_row("wheel_acc_gain"));
+  if (file.has(rows::wheel_acc_gain)) {
+    s.wheel_acc_gain = file.parameter(rows::wheel_acc_gain);
   }
-  if (file.has("acc_sensor_cutoff_Hz")) {
-    s.acc_sensor_cutoff_Hz = file.parameter(model::quarter_car_row("acc_sensor_cutoff_Hz"));
+  if (file.has(rows::acc_sensor_cutoff_Hz)) {
+    s.acc_sensor_cutoff_Hz = file.parameter(rows::acc_sensor_cutoff_Hz);
   }
   if (file.has("acc_sensor_order")) {
-    require_with(file, "acc_sensor_order", "acc_sensor_cutoff_Hz",
+    require_with(file, "acc_sensor_order", rows::acc_sensor_cutoff_Hz.key,
                  "the low-pass' corner frequency, 0 = none");
     const double order = file.number("acc_sensor_order");
     if (order != 1.0 && order != 2.0) {
@@ -165,30 +164,28 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
   result.damper_state =
       damper_state.empty() ? file_state : parse_damper_state(damper_state, "damper state");
   auto& p = result.parameters;
-  p.sprung_mass_kg = file.parameter(model::quarter_car_row("sprung_mass_kg"));
-  p.unsprung_mass_kg = file.parameter(model::quarter_car_row("unsprung_mass_kg"));
-  p.tyre_stiffness_N_per_m = file.parameter(model::quarter_car_row("tyre_stiffness_N_per_m"));
-  p.tyre_damping_Ns_per_m = file.parameter(model::quarter_car_row("tyre_damping_Ns_per_m"));
-  p.spring_stiffness_N_per_m = file.parameter(model::quarter_car_row("spring_stiffness_N_per_m"));
+  p.sprung_mass_kg = file.parameter(rows::sprung_mass_kg);
+  p.unsprung_mass_kg = file.parameter(rows::unsprung_mass_kg);
+  p.tyre_stiffness_N_per_m = file.parameter(rows::tyre_stiffness_N_per_m);
+  p.tyre_damping_Ns_per_m = file.parameter(rows::tyre_damping_Ns_per_m);
+  p.spring_stiffness_N_per_m = file.parameter(rows::spring_stiffness_N_per_m);
   p.top_mount_spring_path_stiffness_N_per_m =
-      file.parameter(model::quarter_car_row("top_mount_spring_path_stiffness_N_per_m"));
-  p.top_mount_stiffness_N_per_m =
-      file.parameter(model::quarter_car_row("top_mount_stiffness_N_per_m"));
+      file.parameter(rows::top_mount_spring_path_stiffness_N_per_m);
+  p.top_mount_stiffness_N_per_m = file.parameter(rows::top_mount_stiffness_N_per_m);
   // The Maxwell element's damper rate is (k_tm·(z − z_c) − F)/c: c must be > 0.
-  p.damping_Ns_per_m = file.parameter(model::quarter_car_row("damping_Ns_per_m"));
+  p.damping_Ns_per_m = file.parameter(rows::damping_Ns_per_m);
   // damping_Ns_per_m is the rebound coefficient; compression gets this ratio times it (and by
   // default the same: the symmetric damper).
   p.compression_to_rebound_ratio = 1.0;
-  if (file.has("compression_to_rebound_ratio")) {
-    p.compression_to_rebound_ratio =
-        file.parameter(model::quarter_car_row("compression_to_rebound_ratio"));
+  if (file.has(rows::compression_to_rebound_ratio)) {
+    p.compression_to_rebound_ratio = file.parameter(rows::compression_to_rebound_ratio);
   }
   const bool friction_required = result.damper_state == model::DamperState::kStickSlip;
-  if (friction_required || file.has("dahl_sigma0_N_per_m") || file.has("coulomb_force_N") ||
-      file.has("dahl_exponent")) {
-    p.dahl_sigma0_N_per_m = file.parameter(model::quarter_car_row("dahl_sigma0_N_per_m"));
-    p.coulomb_force_N = file.parameter(model::quarter_car_row("coulomb_force_N"));
-    p.dahl_exponent = file.parameter(model::quarter_car_row("dahl_exponent"));
+  if (friction_required || file.has(rows::dahl_sigma0_N_per_m) || file.has(rows::coulomb_force_N) ||
+      file.has(rows::dahl_exponent)) {
+    p.dahl_sigma0_N_per_m = file.parameter(rows::dahl_sigma0_N_per_m);
+    p.coulomb_force_N = file.parameter(rows::coulomb_force_N);
+    p.dahl_exponent = file.parameter(rows::dahl_exponent);
   } else {
     p.dahl_sigma0_N_per_m = 1.0;
     p.coulomb_force_N = 0.0;

@@ -27,9 +27,12 @@ class YamlMap {
 
   const std::filesystem::path& path() const { return path_; }
   bool has(const std::string& key) const;
+  // The same for a parameter row's key (model/*_parameter_table.h).
+  bool has(const model::ParameterInfo& row) const { return has(row.key_string()); }
 
   // A required real number; `min_exclusive`/`min_inclusive` express range rules.
   double number(const std::string& key) const;
+  double number(const model::ParameterInfo& row) const { return number(row.key_string()); }
   double positive(const std::string& key) const;      // > 0
   double non_negative(const std::string& key) const;  // >= 0
   // Physically plausible ranges: 0 < v <= hi, and 0 <= v <= hi.
@@ -67,6 +70,7 @@ class YamlMap {
 
   // "FILE: key 'a.b'" prefix for messages about `key`.
   std::string locate(const std::string& key) const;
+  std::string locate(const model::ParameterInfo& row) const { return locate(row.key_string()); }
 
  private:
   YAML::Node required(const std::string& key) const;

@@ -7,9 +7,9 @@
 namespace ridefit::model {
 namespace {
 
-constexpr std::size_t row_of(std::string_view key) {
-  return quarter_car_parameter_index(key).value();
-}
+namespace qc = quarter_car_rows;
+
+constexpr std::size_t row_of(const ParameterInfo& row) { return quarter_car_row_index(row); }
 
 // HalfCarAxle's fields in the order of half_car_axle_rows().
 double* axle_field(HalfCarAxle<double>& a, std::size_t i) {
@@ -66,7 +66,7 @@ std::optional<ParameterError> check_axle(const HalfCarAxle<double>& a, const Axl
     const ParameterInfo& row = kQuarterCarParameters[rows[i]];
     const double v = *axle_field(const_cast<HalfCarAxle<double>&>(a), i);
     // A passive axle's damper may be 0 (a strut's rate divides by it).
-    if (rows[i] == row_of("damping_Ns_per_m") && t.suspension == AxleSuspension::kPassive &&
+    if (rows[i] == row_of(qc::damping_Ns_per_m) && t.suspension == AxleSuspension::kPassive &&
         v == 0.0) {
       continue;
     }
@@ -78,19 +78,19 @@ std::optional<ParameterError> check_axle(const HalfCarAxle<double>& a, const Axl
 }  // namespace
 
 const std::array<std::size_t, 13>& half_car_axle_rows() {
-  static constexpr std::array<std::size_t, 13> rows{row_of("unsprung_mass_kg"),
-                                                    row_of("tyre_stiffness_N_per_m"),
-                                                    row_of("tyre_damping_Ns_per_m"),
-                                                    row_of("spring_stiffness_N_per_m"),
-                                                    row_of("damping_Ns_per_m"),
-                                                    row_of("top_mount_stiffness_N_per_m"),
-                                                    row_of("dahl_sigma0_N_per_m"),
-                                                    row_of("coulomb_force_N"),
-                                                    row_of("dahl_exponent"),
-                                                    row_of("compression_to_rebound_ratio"),
-                                                    row_of("damping_per_command_Ns_per_m"),
-                                                    row_of("coulomb_force_per_command_N"),
-                                                    row_of("command_lag_s")};
+  static constexpr std::array<std::size_t, 13> rows{row_of(qc::unsprung_mass_kg),
+                                                    row_of(qc::tyre_stiffness_N_per_m),
+                                                    row_of(qc::tyre_damping_Ns_per_m),
+                                                    row_of(qc::spring_stiffness_N_per_m),
+                                                    row_of(qc::damping_Ns_per_m),
+                                                    row_of(qc::top_mount_stiffness_N_per_m),
+                                                    row_of(qc::dahl_sigma0_N_per_m),
+                                                    row_of(qc::coulomb_force_N),
+                                                    row_of(qc::dahl_exponent),
+                                                    row_of(qc::compression_to_rebound_ratio),
+                                                    row_of(qc::damping_per_command_Ns_per_m),
+                                                    row_of(qc::coulomb_force_per_command_N),
+                                                    row_of(qc::command_lag_s)};
   return rows;
 }
 
@@ -157,22 +157,24 @@ std::optional<ParameterError> validate(const HalfCarParameters<double>& p,
       return error;
   }
   if (control.min_damping_Ns_per_m > control.max_damping_Ns_per_m) {
-    return ParameterError{"control.min_damping_Ns_per_m",
-                          fmt::format("is {} Ns/m, above max_damping_Ns_per_m {} Ns/m; a damper's "
-                                      "limits need c_min <= c_max",
-                                      control.min_damping_Ns_per_m, control.max_damping_Ns_per_m)};
+    return ParameterError{
+        fmt::format("control.{}", control_rows::min_damping_Ns_per_m.key),
+        fmt::format("is {} Ns/m, above {} {} Ns/m; a damper's limits need c_min <= c_max",
+                    control.min_damping_Ns_per_m, control_rows::max_damping_Ns_per_m.key,
+                    control.max_damping_Ns_per_m)};
   }
   if (control.law != ControlLaw::kPassive) {
     if (!(control.max_damping_Ns_per_m > 0.0)) {
-      return ParameterError{"control.max_damping_Ns_per_m", "must be > 0 under a control law"};
+      return ParameterError{fmt::format("control.{}", control_rows::max_damping_Ns_per_m.key),
+                            "must be > 0 under a control law"};
     }
     for (auto [name, axle] : {std::pair{"front", &p.front}, {"rear", &p.rear}}) {
       if (axle->commanded() && axle->damping_per_command_Ns_per_m == 0.0) {
         return ParameterError{
-            fmt::format("{}.coulomb_force_per_command_N", name),
-            fmt::format("needs {}.damping_per_command_Ns_per_m != 0: the control law sets the "
-                        "damping through the command, u = (c_law - c)/c_b",
-                        name)};
+            fmt::format("{}.{}", name, qc::coulomb_force_per_command_N.key),
+            fmt::format("needs {}.{} != 0: the control law sets the damping through the "
+                        "command, u = (c_law - c)/c_b",
+                        name, qc::damping_per_command_Ns_per_m.key)};
       }
     }
   }

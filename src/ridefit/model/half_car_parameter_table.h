@@ -24,11 +24,27 @@ inline constexpr std::array<ParameterInfo, 5> kHalfCarBodyParameters{{
     {"seat_distance_m", "m", -20.0, 20.0, false, false, "a3, seat ahead of it (negative: behind)"},
 }};
 
+// The body's rows by name (as quarter_car_rows).
+namespace half_car_body_rows {
+inline constexpr const ParameterInfo& body_mass_kg = kHalfCarBodyParameters[0];
+inline constexpr const ParameterInfo& pitch_inertia_kg_m2 = kHalfCarBodyParameters[1];
+inline constexpr const ParameterInfo& front_axle_distance_m = kHalfCarBodyParameters[2];
+inline constexpr const ParameterInfo& rear_axle_distance_m = kHalfCarBodyParameters[3];
+inline constexpr const ParameterInfo& seat_distance_m = kHalfCarBodyParameters[4];
+}  // namespace half_car_body_rows
+
 inline constexpr std::array<ParameterInfo, 3> kSuspendedMassParameters{{
     {"mass_kg", "kg", 0.0, 1e5, true, false, "mass of the seat or the body segment"},
     {"stiffness_N_per_m", "N/m", 0.0, 1e10, true, false, "its support's stiffness"},
     {"damping_Ns_per_m", "N*s/m", 0.0, 1e7, false, false, "its support's damping"},
 }};
+
+// The seat's and the body segments' rows by name.
+namespace suspended_mass_rows {
+inline constexpr const ParameterInfo& mass_kg = kSuspendedMassParameters[0];
+inline constexpr const ParameterInfo& stiffness_N_per_m = kSuspendedMassParameters[1];
+inline constexpr const ParameterInfo& damping_Ns_per_m = kSuspendedMassParameters[2];
+}  // namespace suspended_mass_rows
 
 inline constexpr std::array<ParameterInfo, 5> kControlParameters{{
     {"min_damping_Ns_per_m", "N*s/m", 0.0, 1e7, false, false, "the damper's lowest coefficient"},
@@ -37,6 +53,15 @@ inline constexpr std::array<ParameterInfo, 5> kControlParameters{{
     {"groundhook_damping_Ns_per_m", "N*s/m", 0.0, 1e7, false, false, "groundhook and hybrid laws"},
     {"skyhook_share", "1", 0.0, 1.0, false, false, "hybrid law's share of skyhook, alpha"},
 }};
+
+// The control law's rows by name.
+namespace control_rows {
+inline constexpr const ParameterInfo& min_damping_Ns_per_m = kControlParameters[0];
+inline constexpr const ParameterInfo& max_damping_Ns_per_m = kControlParameters[1];
+inline constexpr const ParameterInfo& skyhook_damping_Ns_per_m = kControlParameters[2];
+inline constexpr const ParameterInfo& groundhook_damping_Ns_per_m = kControlParameters[3];
+inline constexpr const ParameterInfo& skyhook_share = kControlParameters[4];
+}  // namespace control_rows
 
 // The quarter-car row indices an axle has, in HalfCarAxle's order.
 const std::array<std::size_t, 13>& half_car_axle_rows();

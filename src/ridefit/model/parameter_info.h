@@ -21,6 +21,9 @@ struct ParameterInfo {
   bool zero_is_off;  // an optional effect: 0 switches it off and is always accepted
   std::string_view meaning;
 
+  // The key as a std::string, for the maps and lists of keys.
+  std::string key_string() const { return std::string(key); }
+
   bool contains(double value) const {
     if (zero_is_off && value == 0.0) return true;
     return (lower_open ? value > lower : value >= lower) && value <= upper;

@@ -5,12 +5,7 @@
 namespace ridefit::model {
 namespace {
 
-constexpr std::size_t index_of(std::string_view key) {
-  return quarter_car_parameter_index(key).value();
-}
-
-constexpr std::size_t kCoulomb = index_of("coulomb_force_N");
-constexpr std::size_t kStaticFriction = index_of("static_friction_force_N");
+namespace rows = quarter_car_rows;
 
 // `a` and `b` switch one effect on together (> 0) or leave it off (0).
 std::optional<ParameterError> together(const ParameterInfo& a, double va, const ParameterInfo& b,
@@ -31,9 +26,9 @@ std::optional<ParameterError> validate(const QuarterCarParameters<double>& p) {
       return error;
     }
   }
-  constexpr auto& k_s = quarter_car_row("top_mount_small_amplitude_stiffness_N_per_m");
-  constexpr auto& delta0 = quarter_car_row("top_mount_transition_deflection_m");
-  constexpr auto& k_l = quarter_car_row("top_mount_stiffness_N_per_m");
+  constexpr auto& k_s = rows::top_mount_small_amplitude_stiffness_N_per_m;
+  constexpr auto& delta0 = rows::top_mount_transition_deflection_m;
+  constexpr auto& k_l = rows::top_mount_stiffness_N_per_m;
   if (auto error = together(k_s, p.top_mount_small_amplitude_stiffness_N_per_m, delta0,
                             p.top_mount_transition_deflection_m)) {
     return error;
@@ -46,37 +41,34 @@ std::optional<ParameterError> validate(const QuarterCarParameters<double>& p) {
                                       p.top_mount_small_amplitude_stiffness_N_per_m, k_l.key,
                                       p.top_mount_stiffness_N_per_m)};
   }
-  if (auto error =
-          together(quarter_car_row("bump_stop_stiffness_N_per_m"), p.bump_stop_stiffness_N_per_m,
-                   quarter_car_row("bump_stop_clearance_m"), p.bump_stop_clearance_m)) {
+  if (auto error = together(rows::bump_stop_stiffness_N_per_m, p.bump_stop_stiffness_N_per_m,
+                            rows::bump_stop_clearance_m, p.bump_stop_clearance_m)) {
     return error;
   }
-  constexpr auto& c_h = quarter_car_row("damping_above_knee_Ns_per_m");
-  if (auto error = together(quarter_car_row("damper_knee_velocity_m_per_s"),
-                            p.damper_knee_velocity_m_per_s, c_h, p.damping_above_knee_Ns_per_m)) {
+  constexpr auto& c_h = rows::damping_above_knee_Ns_per_m;
+  if (auto error = together(rows::damper_knee_velocity_m_per_s, p.damper_knee_velocity_m_per_s, c_h,
+                            p.damping_above_knee_Ns_per_m)) {
     return error;
   }
   if (p.damping_above_knee_Ns_per_m > p.damping_Ns_per_m) {
     return ParameterError{
         std::string(c_h.key),
         fmt::format("is {}, expected a value <= {} (at most '{}': the knee is digressive)",
-                    p.damping_above_knee_Ns_per_m, p.damping_Ns_per_m,
-                    quarter_car_row("damping_Ns_per_m").key)};
+                    p.damping_above_knee_Ns_per_m, p.damping_Ns_per_m, rows::damping_Ns_per_m.key)};
   }
   if (p.stribeck_velocity_m_per_s > 0.0) {
-    const auto& v_s = quarter_car_row("stribeck_velocity_m_per_s");
+    const auto& v_s = rows::stribeck_velocity_m_per_s;
     if (!(p.coulomb_force_N > 0.0)) {
       return ParameterError{std::string(v_s.key),
                             fmt::format("needs Dahl friction: '{}' > 0 (it is {})",
-                                        kQuarterCarParameters[kCoulomb].key, p.coulomb_force_N)};
+                                        rows::coulomb_force_N.key, p.coulomb_force_N)};
     }
     if (p.static_friction_force_N < p.coulomb_force_N) {
       return ParameterError{
-          std::string(kQuarterCarParameters[kStaticFriction].key),
+          rows::static_friction_force_N.key_string(),
           fmt::format("is {}, expected at least '{}' {}: friction breaks away at or above its "
                       "sliding level",
-                      p.static_friction_force_N, kQuarterCarParameters[kCoulomb].key,
-                      p.coulomb_force_N)};
+                      p.static_friction_force_N, rows::coulomb_force_N.key, p.coulomb_force_N)};
     }
   }
   if (p.sensors.acc_sensor_order != 1 && p.sensors.acc_sensor_order != 2) {
@@ -87,7 +79,8 @@ std::optional<ParameterError> validate(const QuarterCarParameters<double>& p) {
 }
 
 void set_quarter_car_parameter(QuarterCarParameters<double>& p, std::size_t index, double value) {
-  if (index == kCoulomb && p.static_friction_force_N == p.coulomb_force_N) {
+  if (index == quarter_car_row_index(rows::coulomb_force_N) &&
+      p.static_friction_force_N == p.coulomb_force_N) {
     p.static_friction_force_N = value;
   }
   quarter_car_parameter(p, index) = value;

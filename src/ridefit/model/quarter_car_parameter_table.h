@@ -60,6 +60,41 @@ inline constexpr std::array<ParameterInfo, 27> kQuarterCarParameters{{
      "accelerometer low-pass corner; 0 = none"},
 }};
 
+// Each row by name, for code that means one parameter: quarter_car_rows::coulomb_force_N is the
+// row of coulomb_force_N and .key its key, which only the table above spells (a misspelt name
+// does not compile; tests/model/parameter_table_test.cc checks each name's row).
+namespace quarter_car_rows {
+inline constexpr const ParameterInfo& sprung_mass_kg = kQuarterCarParameters[0];
+inline constexpr const ParameterInfo& unsprung_mass_kg = kQuarterCarParameters[1];
+inline constexpr const ParameterInfo& tyre_stiffness_N_per_m = kQuarterCarParameters[2];
+inline constexpr const ParameterInfo& tyre_damping_Ns_per_m = kQuarterCarParameters[3];
+inline constexpr const ParameterInfo& spring_stiffness_N_per_m = kQuarterCarParameters[4];
+inline constexpr const ParameterInfo& top_mount_spring_path_stiffness_N_per_m =
+    kQuarterCarParameters[5];
+inline constexpr const ParameterInfo& top_mount_stiffness_N_per_m = kQuarterCarParameters[6];
+inline constexpr const ParameterInfo& damping_Ns_per_m = kQuarterCarParameters[7];
+inline constexpr const ParameterInfo& dahl_sigma0_N_per_m = kQuarterCarParameters[8];
+inline constexpr const ParameterInfo& coulomb_force_N = kQuarterCarParameters[9];
+inline constexpr const ParameterInfo& dahl_exponent = kQuarterCarParameters[10];
+inline constexpr const ParameterInfo& compression_to_rebound_ratio = kQuarterCarParameters[11];
+inline constexpr const ParameterInfo& top_mount_small_amplitude_stiffness_N_per_m =
+    kQuarterCarParameters[12];
+inline constexpr const ParameterInfo& top_mount_transition_deflection_m = kQuarterCarParameters[13];
+inline constexpr const ParameterInfo& bump_stop_stiffness_N_per_m = kQuarterCarParameters[14];
+inline constexpr const ParameterInfo& bump_stop_clearance_m = kQuarterCarParameters[15];
+inline constexpr const ParameterInfo& bump_stop_exponent = kQuarterCarParameters[16];
+inline constexpr const ParameterInfo& damper_knee_velocity_m_per_s = kQuarterCarParameters[17];
+inline constexpr const ParameterInfo& damping_above_knee_Ns_per_m = kQuarterCarParameters[18];
+inline constexpr const ParameterInfo& static_friction_force_N = kQuarterCarParameters[19];
+inline constexpr const ParameterInfo& stribeck_velocity_m_per_s = kQuarterCarParameters[20];
+inline constexpr const ParameterInfo& damping_per_command_Ns_per_m = kQuarterCarParameters[21];
+inline constexpr const ParameterInfo& coulomb_force_per_command_N = kQuarterCarParameters[22];
+inline constexpr const ParameterInfo& command_lag_s = kQuarterCarParameters[23];
+inline constexpr const ParameterInfo& body_acc_gain = kQuarterCarParameters[24];
+inline constexpr const ParameterInfo& wheel_acc_gain = kQuarterCarParameters[25];
+inline constexpr const ParameterInfo& acc_sensor_cutoff_Hz = kQuarterCarParameters[26];
+}  // namespace quarter_car_rows
+
 // Index of `key` in kQuarterCarParameters, or none.
 constexpr std::optional<std::size_t> quarter_car_parameter_index(std::string_view key) {
   for (std::size_t i = 0; i < kQuarterCarParameters.size(); ++i) {
@@ -68,9 +103,9 @@ constexpr std::optional<std::size_t> quarter_car_parameter_index(std::string_vie
   return std::nullopt;
 }
 
-// The row of `key`, which must be in the table (a compile-time key: a typo does not compile).
-consteval const ParameterInfo& quarter_car_row(std::string_view key) {
-  return kQuarterCarParameters[quarter_car_parameter_index(key).value()];
+// The index of a row of kQuarterCarParameters (a quarter_car_rows name).
+constexpr std::size_t quarter_car_row_index(const ParameterInfo& row) {
+  return static_cast<std::size_t>(&row - kQuarterCarParameters.data());
 }
 
 // The field of `p` of row `index`.

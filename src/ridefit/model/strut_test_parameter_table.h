@@ -22,12 +22,14 @@ inline constexpr std::array<ParameterInfo, 6> kStrutRigParameters{{
      "load cell's first-order low-pass corner; 0 = none"},
 }};
 
-// The row of a rig-only key, at compile time.
-consteval const ParameterInfo& strut_rig_row(std::string_view key) {
-  for (const auto& row : kStrutRigParameters) {
-    if (row.key == key) return row;
-  }
-  throw "not a rig-only strut parameter";
-}
+// The rig-only rows by name (as model::quarter_car_rows).
+namespace strut_rig_rows {
+inline constexpr const ParameterInfo& gas_force_N = kStrutRigParameters[0];
+inline constexpr const ParameterInfo& gas_stiffness_N_per_m = kStrutRigParameters[1];
+inline constexpr const ParameterInfo& force_offset_N = kStrutRigParameters[2];
+inline constexpr const ParameterInfo& force_gain = kStrutRigParameters[3];
+inline constexpr const ParameterInfo& force_delay_s = kStrutRigParameters[4];
+inline constexpr const ParameterInfo& force_sensor_cutoff_Hz = kStrutRigParameters[5];
+}  // namespace strut_rig_rows
 
 }  // namespace ridefit::model

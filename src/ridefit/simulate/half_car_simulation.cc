@@ -14,8 +14,8 @@ std::vector<double> HalfCarResponse::channel(double model::HalfCarOutputs::*memb
 HalfCarResponse simulate(const model::HalfCar& car, const road::RoadInput& road,
                          const HalfCarSimulationOptions& options) {
   const std::vector<double> times = output_times(options, road.duration_s());
-  const AxleRoadInput roads(
-      road, rear_delay_s(road, car.parameters().wheelbase_m(), options.rear_delay_s));
+  const AxleRoadInput roads(road, rear_delay_s(road, car.parameters().wheelbase_m(),
+                                               options.rear_delay_s, options.rear_delay_name));
   const HalfCarSystem system(car, roads);
   const std::vector<double> x0(static_cast<std::size_t>(car.state_size()), 0.0);
   const Trajectory trajectory = integrate(system, x0, times, options.integrator);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "ridefit/model/half_car.h"
@@ -24,6 +25,9 @@ struct HalfCarResponse {
 struct HalfCarSimulationOptions : SimulationOptions {
   // For roads given over time; roads driven at a speed delay the rear by wheelbase/speed.
   std::optional<double> rear_delay_s;
+  // How a message asking for the delay names it (the CLI gives its flag); a string that
+  // outlives the options, such as a literal.
+  std::string_view rear_delay_name = "rear_delay_s";
 };
 
 // Runs the car from static equilibrium at rest over the road (front wheel) and its delayed

@@ -33,7 +33,7 @@ model::AxleRoads AxleRoadInput::at(double time_s) const {
 }
 
 double rear_delay_s(const road::RoadInput& road, double wheelbase_m,
-                    std::optional<double> rear_delay_s) {
+                    std::optional<double> rear_delay_s, std::string_view name) {
   if (rear_delay_s) {
     if (!(*rear_delay_s >= 0.0) || !std::isfinite(*rear_delay_s)) {
       throw InputError(fmt::format("rear delay {} s: expected a finite delay >= 0", *rear_delay_s));
@@ -43,8 +43,9 @@ double rear_delay_s(const road::RoadInput& road, double wheelbase_m,
   const auto speed = road.speed_m_per_s();
   if (!speed) {
     throw InputError(
-        "this excitation is given over time, not driven at a speed: give the rear wheel's delay "
-        "(--rear-delay S; 0 for a rig that shakes both axles together)");
+        fmt::format("this excitation is given over time, not driven at a speed: give the rear "
+                    "wheel's delay ({}; 0 for a rig that shakes both axles together)",
+                    name));
   }
   return wheelbase_m / *speed;
 }

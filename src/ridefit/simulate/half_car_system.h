@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "ridefit/model/half_car.h"
@@ -24,9 +26,11 @@ class AxleRoadInput {
 };
 
 // The rear delay of a road for a car: wheelbase / speed for a road driven at a speed; for a
-// road given over time, `rear_delay_s` must be given (>= 0), else InputError.
+// road given over time, `rear_delay_s` must be given (>= 0), else InputError asking for it by
+// `name` (the caller's name for the option: the CLI gives its flag).
 double rear_delay_s(const road::RoadInput& road, double wheelbase_m,
-                    std::optional<double> rear_delay_s = std::nullopt);
+                    std::optional<double> rear_delay_s = std::nullopt,
+                    std::string_view name = "rear_delay_s");
 
 // A half car on its roads as a first-order system; the Jacobian comes from the templated model
 // by forward-mode autodiff (Eigen's AutoDiffScalar), as for the quarter car.

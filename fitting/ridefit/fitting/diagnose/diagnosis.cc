@@ -9,6 +9,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/common/parallel_for.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -33,11 +34,12 @@ PsdMeasurement slice(const PsdMeasurement& m, std::size_t begin, std::size_t end
 std::vector<std::string> default_free(const model::QuarterCar& car) {
   // A locked damper has no damping to fit; the body's mass (payload) is the usual unknown, and
   // it cannot stand in for a missing effect at the wheel mode as a stiffness would.
-  if (car.damper_state() == model::DamperState::kStick) return {"sprung_mass_kg"};
-  std::vector<std::string> free{"damping_Ns_per_m"};
+  namespace rows = model::quarter_car_rows;
+  if (car.damper_state() == model::DamperState::kStick) return {rows::sprung_mass_kg.key_string()};
+  std::vector<std::string> free{rows::damping_Ns_per_m.key_string()};
   if (car.damper_state() == model::DamperState::kStickSlip &&
       car.parameters().coulomb_force_N > 0) {
-    free.push_back("coulomb_force_N");
+    free.push_back(rows::coulomb_force_N.key_string());
   }
   return free;
 }

@@ -29,8 +29,10 @@ HysteresisRecord slice(const HysteresisRecord& r, std::size_t begin, std::size_t
 }
 
 std::vector<std::string> default_free(const model::StrutTestParameters<double>& strut) {
-  std::vector<std::string> free{"damping_Ns_per_m", "force_offset_N"};
-  if (strut.coulomb_force_N > 0.0) free.push_back("coulomb_force_N");
+  namespace rows = model::quarter_car_rows;
+  std::vector<std::string> free{rows::damping_Ns_per_m.key_string(),
+                                model::strut_rig_rows::force_offset_N.key_string()};
+  if (strut.coulomb_force_N > 0.0) free.push_back(rows::coulomb_force_N.key_string());
   return free;
 }
 

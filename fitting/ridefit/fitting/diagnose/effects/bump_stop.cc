@@ -2,9 +2,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class BumpStop : public Effect {
  public:
@@ -26,10 +29,11 @@ class BumpStop : public Effect {
     // Start soft (the spring's own rate) and at a typical clearance, so the first evaluations
     // change the model gently.
     const double k = baseline.car.parameters().spring_stiffness_N_per_m;
-    return {{{"bump_stop_stiffness_N_per_m", 3.0 * k}, {"bump_stop_clearance_m", 0.02}},
+    return {{{rows::bump_stop_stiffness_N_per_m.key_string(), 3.0 * k},
+             {rows::bump_stop_clearance_m.key_string(), 0.02}},
             std::nullopt,
-            {{"bump_stop_stiffness_N_per_m", 0.1 * k, 1000.0 * k},
-             {"bump_stop_clearance_m", 0.001, 0.2}},
+            {{rows::bump_stop_stiffness_N_per_m.key_string(), 0.1 * k, 1000.0 * k},
+             {rows::bump_stop_clearance_m.key_string(), 0.001, 0.2}},
             {}};
   }
 };

@@ -3,9 +3,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class CommandDependence : public Effect {
  public:
@@ -32,16 +35,17 @@ class CommandDependence : public Effect {
     // far above the top mount).
     const auto& s = baseline.strut;
     const double sigma0 = s.dahl_sigma0_N_per_m > 1e3 ? s.dahl_sigma0_N_per_m : 5e6;
-    EffectChange change{{{"damping_per_command_Ns_per_m", 0.3 * s.damping_Ns_per_m},
-                         {"coulomb_force_per_command_N", 20.0},
-                         {"command_lag_s", 0.01},
-                         {"dahl_sigma0_N_per_m", sigma0},
-                         {"dahl_exponent", s.coulomb_force_N > 0.0 ? s.dahl_exponent : 1.0}},
-                        {},
-                        {{"damping_per_command_Ns_per_m", -1e5, 1e6},
-                         {"coulomb_force_per_command_N", -1e4, 1e4},
-                         {"command_lag_s", 1e-4, 0.5}},
-                        {{{"command_lag_s", 0.002}}, {{"command_lag_s", 0.05}}}};
+    EffectChange change{
+        {{rows::damping_per_command_Ns_per_m.key_string(), 0.3 * s.damping_Ns_per_m},
+         {rows::coulomb_force_per_command_N.key_string(), 20.0},
+         {rows::command_lag_s.key_string(), 0.01},
+         {rows::dahl_sigma0_N_per_m.key_string(), sigma0},
+         {rows::dahl_exponent.key_string(), s.coulomb_force_N > 0.0 ? s.dahl_exponent : 1.0}},
+        {},
+        {{rows::damping_per_command_Ns_per_m.key_string(), -1e5, 1e6},
+         {rows::coulomb_force_per_command_N.key_string(), -1e4, 1e4},
+         {rows::command_lag_s.key_string(), 1e-4, 0.5}},
+        {{{rows::command_lag_s.key_string(), 0.002}}, {{rows::command_lag_s.key_string(), 0.05}}}};
     return change;
   }
 
@@ -54,13 +58,14 @@ class CommandDependence : public Effect {
   static EffectChange vehicle_change(const DiagnosisModel& baseline) {
     const auto& p = baseline.car.parameters();
     EffectChange change{
-        {{"damping_per_command_Ns_per_m", 0.3 * p.damping_Ns_per_m}, {"command_lag_s", 0.01}},
+        {{rows::damping_per_command_Ns_per_m.key_string(), 0.3 * p.damping_Ns_per_m},
+         {rows::command_lag_s.key_string(), 0.01}},
         {},
-        {{"damping_per_command_Ns_per_m", -1e5, 1e6}},
-        {{{"damping_per_command_Ns_per_m", 1.0 * p.damping_Ns_per_m}}}};
+        {{rows::damping_per_command_Ns_per_m.key_string(), -1e5, 1e6}},
+        {{{rows::damping_per_command_Ns_per_m.key_string(), 1.0 * p.damping_Ns_per_m}}}};
     if (baseline.car.damper_state() == model::DamperState::kStickSlip && p.coulomb_force_N > 0.0) {
-      change.set["coulomb_force_per_command_N"] = 0.0;
-      change.free.push_back({"coulomb_force_per_command_N", -1e4, 1e4});
+      change.set[rows::coulomb_force_per_command_N.key_string()] = 0.0;
+      change.free.push_back({rows::coulomb_force_per_command_N.key_string(), -1e4, 1e4});
     }
     return change;
   }

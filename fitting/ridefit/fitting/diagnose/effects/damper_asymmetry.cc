@@ -2,9 +2,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class DamperAsymmetry : public Effect {
  public:
@@ -27,9 +30,9 @@ class DamperAsymmetry : public Effect {
     return "";
   }
   EffectChange change(const DiagnosisModel&) const override {
-    return {{{"compression_to_rebound_ratio", 0.7}},
+    return {{{rows::compression_to_rebound_ratio.key_string(), 0.7}},
             std::nullopt,
-            {{"compression_to_rebound_ratio", 0.1, 3.0}},
+            {{rows::compression_to_rebound_ratio.key_string(), 0.1, 3.0}},
             {}};
   }
 };

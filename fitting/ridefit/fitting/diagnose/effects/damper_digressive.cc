@@ -2,9 +2,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class DamperDigressive : public Effect {
  public:
@@ -28,16 +31,17 @@ class DamperDigressive : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     const double c = baseline.car.parameters().damping_Ns_per_m;
-    return {{{"damper_knee_velocity_m_per_s", 0.1}, {"damping_above_knee_Ns_per_m", 0.5 * c}},
+    return {{{rows::damper_knee_velocity_m_per_s.key_string(), 0.1},
+             {rows::damping_above_knee_Ns_per_m.key_string(), 0.5 * c}},
             std::nullopt,
-            {{"damper_knee_velocity_m_per_s", 0.005, 2.0},
-             {"damping_above_knee_Ns_per_m", 0.02 * c, c}},
+            {{rows::damper_knee_velocity_m_per_s.key_string(), 0.005, 2.0},
+             {rows::damping_above_knee_Ns_per_m.key_string(), 0.02 * c, c}},
             // A second start with the damping split around the baseline's fitted value: from the
             // first alone the fit could slide down the knee–damping valley (a low knee with a
             // stiff damper below it) that a short record barely tells from the truth.
-            {{{"damper_knee_velocity_m_per_s", 0.1},
-              {"damping_above_knee_Ns_per_m", 0.8 * c},
-              {"damping_Ns_per_m", 2.0 * c}}}};
+            {{{rows::damper_knee_velocity_m_per_s.key_string(), 0.1},
+              {rows::damping_above_knee_Ns_per_m.key_string(), 0.8 * c},
+              {rows::damping_Ns_per_m.key_string(), 2.0 * c}}}};
   }
 };
 

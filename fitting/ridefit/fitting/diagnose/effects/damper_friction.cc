@@ -3,9 +3,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class DamperFriction : public Effect {
  public:
@@ -35,9 +38,11 @@ class DamperFriction : public Effect {
                              ? baseline.strut.dahl_sigma0_N_per_m
                              : baseline.car.parameters().dahl_sigma0_N_per_m;
     const double sigma0 = named > 1e3 ? named : 5e6;
-    return {{{"dahl_sigma0_N_per_m", sigma0}, {"coulomb_force_N", 30.0}, {"dahl_exponent", 1.0}},
+    return {{{rows::dahl_sigma0_N_per_m.key_string(), sigma0},
+             {rows::coulomb_force_N.key_string(), 30.0},
+             {rows::dahl_exponent.key_string(), 1.0}},
             model::DamperState::kStickSlip,
-            {{"coulomb_force_N", 1.0, 1000.0}},
+            {{rows::coulomb_force_N.key_string(), 1.0, 1000.0}},
             {}};
   }
 };

@@ -3,9 +3,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class FrictionVelocityDependence : public Effect {
  public:
@@ -35,12 +38,14 @@ class FrictionVelocityDependence : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     const double fc = baseline.strut.coulomb_force_N;
-    return {{{"static_friction_force_N", 1.3 * fc}, {"stribeck_velocity_m_per_s", 0.01}},
+    return {{{rows::static_friction_force_N.key_string(), 1.3 * fc},
+             {rows::stribeck_velocity_m_per_s.key_string(), 0.01}},
             std::nullopt,
-            {{"static_friction_force_N", 1.001 * fc, 5.0 * fc},
-             {"stribeck_velocity_m_per_s", 1e-4, 0.5}},
+            {{rows::static_friction_force_N.key_string(), 1.001 * fc, 5.0 * fc},
+             {rows::stribeck_velocity_m_per_s.key_string(), 1e-4, 0.5}},
             // The hump's width and height trade off: start also narrow and tall.
-            {{{"static_friction_force_N", 1.8 * fc}, {"stribeck_velocity_m_per_s", 0.002}}}};
+            {{{rows::static_friction_force_N.key_string(), 1.8 * fc},
+              {rows::stribeck_velocity_m_per_s.key_string(), 0.002}}}};
   }
 };
 

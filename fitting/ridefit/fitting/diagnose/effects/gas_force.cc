@@ -4,9 +4,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/strut_test_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rig = model::strut_rig_rows;
 
 class GasForce : public Effect {
  public:
@@ -27,15 +30,16 @@ class GasForce : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     // A small rate to start from (a gas spring is never exactly zero; the fit sets its size).
-    EffectChange change{{{"gas_force_N", 0.0}, {"gas_stiffness_N_per_m", 1000.0}},
-                        std::nullopt,
-                        {{"gas_stiffness_N_per_m", -1e5, 1e5}},
-                        {}};
+    EffectChange change{
+        {{rig::gas_force_N.key_string(), 0.0}, {rig::gas_stiffness_N_per_m.key_string(), 1000.0}},
+        std::nullopt,
+        {{rig::gas_stiffness_N_per_m.key_string(), -1e5, 1e5}},
+        {}};
     // A preload is a constant force, the same to the rig as the load cell's offset: when the
     // baseline fits that offset, it carries the preload too (and the report's offset is the sum).
-    if (std::find(baseline.free.begin(), baseline.free.end(), "force_offset_N") ==
+    if (std::find(baseline.free.begin(), baseline.free.end(), rig::force_offset_N.key) ==
         baseline.free.end()) {
-      change.free.push_back({"gas_force_N", -5e3, 5e3});
+      change.free.push_back({rig::gas_force_N.key_string(), -5e3, 5e3});
     }
     return change;
   }

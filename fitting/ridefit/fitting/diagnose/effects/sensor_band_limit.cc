@@ -4,9 +4,14 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
+#include "ridefit/model/strut_test_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
+namespace rig = model::strut_rig_rows;
 
 class SensorBandLimit : public Effect {
  public:
@@ -30,20 +35,20 @@ class SensorBandLimit : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     if (baseline.kind == DataKind::kStrutLoops) {
-      return {{{"force_sensor_cutoff_Hz", 100.0}},
+      return {{{rig::force_sensor_cutoff_Hz.key_string(), 100.0}},
               {},
-              {{"force_sensor_cutoff_Hz", 1.0, 1e4}},
-              {{{"force_sensor_cutoff_Hz", 20.0}}}};
+              {{rig::force_sensor_cutoff_Hz.key_string(), 1.0, 1e4}},
+              {{{rig::force_sensor_cutoff_Hz.key_string(), 20.0}}}};
     }
     // Vehicle spectra: one low-pass on both accelerometers (they share the acquisition's
     // anti-alias filter), its corner fitted; the order is not a parameter, so both are tried
     // (first order from 100 Hz, two stages from 30 Hz) and the lower training cost kept. A
     // second-order corner below the band's top bends the spectrum ~4·dB per (f/f_c)², which no
     // mass, stiffness or damping does to both channels alike.
-    return {{{"acc_sensor_cutoff_Hz", 100.0}, {"acc_sensor_order", 1.0}},
+    return {{{rows::acc_sensor_cutoff_Hz.key_string(), 100.0}, {"acc_sensor_order", 1.0}},
             {},
-            {{"acc_sensor_cutoff_Hz", 1.0, 1e4}},
-            {{{"acc_sensor_cutoff_Hz", 30.0}, {"acc_sensor_order", 2.0}}}};
+            {{rows::acc_sensor_cutoff_Hz.key_string(), 1.0, 1e4}},
+            {{{rows::acc_sensor_cutoff_Hz.key_string(), 30.0}, {"acc_sensor_order", 2.0}}}};
   }
 };
 

@@ -2,9 +2,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/strut_test_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rig = model::strut_rig_rows;
 
 class SensorDelay : public Effect {
  public:
@@ -26,10 +29,10 @@ class SensorDelay : public Effect {
     return "";
   }
   EffectChange change(const DiagnosisModel&) const override {
-    return {{{"force_delay_s", 0.001}},
+    return {{{rig::force_delay_s.key_string(), 0.001}},
             {},
-            {{"force_delay_s", 0.0, 0.05}},
-            {{{"force_delay_s", 0.01}}}};
+            {{rig::force_delay_s.key_string(), 0.0, 0.05}},
+            {{{rig::force_delay_s.key_string(), 0.01}}}};
   }
 };
 

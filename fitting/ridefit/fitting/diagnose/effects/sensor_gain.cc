@@ -4,9 +4,14 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
+#include "ridefit/model/strut_test_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
+namespace rig = model::strut_rig_rows;
 
 class SensorGain : public Effect {
  public:
@@ -35,16 +40,20 @@ class SensorGain : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     if (baseline.kind == DataKind::kStrutLoops) {
-      return {{{"force_gain", 0.99}}, {}, {{"force_gain", 0.5, 2.0}}, {}};
+      return {{{rig::force_gain.key_string(), 0.99}},
+              {},
+              {{rig::force_gain.key_string(), 0.5, 2.0}},
+              {}};
     }
     // Vehicle spectra: both accelerometers' gains, each from near 1. The road is measured, so
     // a gain cannot hide in the excitation: below the body mode the body follows the road
     // (transmissibility 1 whatever the masses and stiffnesses), and a gain lifts the whole
     // channel by the same dB where a physical parameter reshapes it. A channel whose level
     // agrees keeps its gain at 1.
-    return {{{"body_acc_gain", 0.99}, {"wheel_acc_gain", 0.99}},
+    return {{{rows::body_acc_gain.key_string(), 0.99}, {rows::wheel_acc_gain.key_string(), 0.99}},
             {},
-            {{"body_acc_gain", 0.5, 2.0}, {"wheel_acc_gain", 0.5, 2.0}},
+            {{rows::body_acc_gain.key_string(), 0.5, 2.0},
+             {rows::wheel_acc_gain.key_string(), 0.5, 2.0}},
             {}};
   }
 };

@@ -3,9 +3,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class TopMountAmplitudeStiffening : public Effect {
  public:
@@ -31,16 +34,17 @@ class TopMountAmplitudeStiffening : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     const double k_large = baseline.car.parameters().top_mount_stiffness_N_per_m;
-    return {{{"top_mount_small_amplitude_stiffness_N_per_m", 1.4 * k_large},
-             {"top_mount_transition_deflection_m", 1e-3}},
+    return {{{rows::top_mount_small_amplitude_stiffness_N_per_m.key_string(), 1.4 * k_large},
+             {rows::top_mount_transition_deflection_m.key_string(), 1e-3}},
             std::nullopt,
-            {{"top_mount_small_amplitude_stiffness_N_per_m", 1.001 * k_large, 5.0 * k_large},
-             {"top_mount_transition_deflection_m", 1e-6, 1e-2}},
+            {{rows::top_mount_small_amplitude_stiffness_N_per_m.key_string(), 1.001 * k_large,
+              5.0 * k_large},
+             {rows::top_mount_transition_deflection_m.key_string(), 1e-6, 1e-2}},
             // k_s and δ0 trade off along a curved valley (the stiffness at the amplitude the
             // road excites): start also below and above the typical deflection.
-            {{{"top_mount_transition_deflection_m", 3e-4}},
-             {{"top_mount_transition_deflection_m", 3e-3},
-              {"top_mount_small_amplitude_stiffness_N_per_m", 1.8 * k_large}}}};
+            {{{rows::top_mount_transition_deflection_m.key_string(), 3e-4}},
+             {{rows::top_mount_transition_deflection_m.key_string(), 3e-3},
+              {rows::top_mount_small_amplitude_stiffness_N_per_m.key_string(), 1.8 * k_large}}}};
   }
 };
 

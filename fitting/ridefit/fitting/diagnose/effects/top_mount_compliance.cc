@@ -2,9 +2,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 // A damper-path top mount at or above this stiffness counts as a rigid attachment: its own
 // mode would lie far above any road input (above 700 Hz against a 50 kg wheel).
@@ -28,9 +31,9 @@ class TopMountCompliance : public Effect {
     return "";
   }
   EffectChange change(const DiagnosisModel&) const override {
-    return {{{"top_mount_stiffness_N_per_m", 1e6}},
+    return {{{rows::top_mount_stiffness_N_per_m.key_string(), 1e6}},
             std::nullopt,
-            {{"top_mount_stiffness_N_per_m", 5e4, 1e8}},
+            {{rows::top_mount_stiffness_N_per_m.key_string(), 5e4, 1e8}},
             {}};
   }
 };

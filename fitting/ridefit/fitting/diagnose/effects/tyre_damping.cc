@@ -2,9 +2,12 @@
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
+
+namespace rows = model::quarter_car_rows;
 
 class TyreDamping : public Effect {
  public:
@@ -23,9 +26,9 @@ class TyreDamping : public Effect {
     return "";
   }
   EffectChange change(const DiagnosisModel&) const override {
-    return {{{"tyre_damping_Ns_per_m", 100.0}},
+    return {{{rows::tyre_damping_Ns_per_m.key_string(), 100.0}},
             std::nullopt,
-            {{"tyre_damping_Ns_per_m", 1.0, 5000.0}},
+            {{rows::tyre_damping_Ns_per_m.key_string(), 1.0, 5000.0}},
             {}};
   }
 };
