@@ -24,7 +24,7 @@ struct ModelOverrides {
   ModelOverrides() = default;
   // {{"front.suspension", "strut"}, {"front.damping_Ns_per_m", "1500"}}
   ModelOverrides(std::initializer_list<std::pair<std::string, std::string>> texts);
-  // {{"coulomb_force_N", 30.0}}
+  // {{KEY, 30.0}}: numbers, spelled exactly
   ModelOverrides(std::initializer_list<std::pair<std::string, double>> numbers);
 
   std::vector<std::pair<std::string, std::string>> keys;
