@@ -10,6 +10,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/temporary_files.h"
+#include "ridefit/version.h"
 #include "subcommands.h"
 
 int main(int argc, char** argv) {
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
   ridefit::io::install_temporary_cleanup();
   CLI::App app{"ridefit: vehicle vertical dynamics with suspension friction"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "ridefit 0.1.0");
+  app.set_version_flag("--version", "ridefit " RIDEFIT_VERSION);
   ridefit::cli::register_subcommands(app);
   try {
     app.parse(argc, argv);
