@@ -18,6 +18,7 @@
 #include "ridefit/optimisation/evaluation_journal.h"
 #include "ridefit/optimisation/tuning_study.h"
 #include "ridefit/road/excitation_file.h"
+#include "ridefit/road/opencrg_file.h"
 #include "ridefit/study/half_car_sweep.h"
 
 namespace ridefit::fuzz {
@@ -136,13 +137,23 @@ Outcome journal(std::span<const std::uint8_t> input) {
   });
 }
 
-constexpr std::array<Target, 6> kTargets{{
+// An OpenCRG road file (ASCII or binary); a grid that reads must also give a track.
+Outcome opencrg_file(std::span<const std::uint8_t> input) {
+  const fs::path path = scratch().write("roads", "input.crg", input);
+  return outcome_of([&] {
+    const road::CrgGrid grid = road::read_opencrg(path);
+    (void)road::crg_track(grid, 0.5 * (grid.v_m.front() + grid.v_m.back()), path.string());
+  });
+}
+
+constexpr std::array<Target, 7> kTargets{{
     {"model_yaml", &model_yaml},
     {"excitation_yaml", &excitation_yaml},
     {"tuning_study_yaml", &tuning_study_yaml},
     {"sweep_study_yaml", &sweep_study_yaml},
     {"csv_with_units", &csv_with_units},
     {"journal", &journal},
+    {"opencrg_file", &opencrg_file},
 }};
 
 }  // namespace

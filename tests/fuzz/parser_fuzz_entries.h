@@ -19,7 +19,8 @@ struct Target {
   Outcome (*run)(std::span<const std::uint8_t> input);
 };
 
-// model_yaml, excitation_yaml, tuning_study_yaml, sweep_study_yaml, csv_with_units, journal.
+// model_yaml, excitation_yaml, tuning_study_yaml, sweep_study_yaml, csv_with_units, journal,
+// opencrg_file.
 std::span<const Target> targets();
 
 // The target called `name`; std::invalid_argument for another name.

@@ -12,6 +12,7 @@
 #include "ridefit/road/iso8608.h"
 #include "ridefit/road/log_sweep.h"
 #include "ridefit/road/measured_road.h"
+#include "ridefit/road/opencrg_road.h"
 #include "ridefit/road/power_law_road.h"
 #include "ridefit/road/profile_road.h"
 #include "ridefit/road/road_limits.h"
@@ -128,6 +129,17 @@ std::unique_ptr<RoadInput> read_measured(const io::YamlMap& file) {
       file, [&] { return std::make_unique<MeasuredRoad>(load_measured_road(csv, channel)); });
 }
 
+std::unique_ptr<RoadInput> read_opencrg_excitation(const io::YamlMap& file) {
+  const std::filesystem::path crg = file.file("file");
+  OpenCrgRoadParameters p;
+  p.lateral_offset_m = file.number_or("lateral_offset_m", p.lateral_offset_m);
+  p.speed_m_per_s = read_speed_m_per_s(file);
+  p.offset_m = file.number_or("offset_m", p.offset_m);
+  file.finish();
+  return with_data_file(
+      file, [&] { return std::make_unique<SpatialProfileRoad>(load_opencrg_road(crg, p)); });
+}
+
 }  // namespace
 
 namespace {
@@ -136,8 +148,10 @@ using Reader = std::unique_ptr<RoadInput> (*)(const io::YamlMap&);
 
 const std::map<std::string, Reader>& readers() {
   static const std::map<std::string, Reader> kReaders{
-      {"log_sweep", read_log_sweep}, {"iso8608", read_iso8608}, {"power_law", read_power_law},
-      {"cleat", read_cleat},         {"profile", read_profile}, {"measured", read_measured}};
+      {"log_sweep", read_log_sweep},       {"iso8608", read_iso8608},
+      {"power_law", read_power_law},       {"cleat", read_cleat},
+      {"profile", read_profile},           {"measured", read_measured},
+      {"opencrg", read_opencrg_excitation}};
   return kReaders;
 }
 
