@@ -1,4 +1,5 @@
 #include "ridefit/road/opencrg_file.h"
+#include "ridefit/road/opencrg_format.h"
 
 #include <fmt/core.h>
 
@@ -22,9 +23,6 @@ namespace ridefit::road {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-// Elevations beyond this are no road (as for the profile road).
-constexpr double kMaxValue = 1e4;
-constexpr std::size_t kRecordBytes = 80;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -57,38 +55,6 @@ std::optional<double> parse_real(std::string_view text) {
   if (error != std::errc() || end != buffer + n || !std::isfinite(value)) return std::nullopt;
   return value;
 }
-
-const char* format_name(CrgFormat format) {
-  switch (format) {
-    case CrgFormat::kLrfi:
-      return "LRFI";
-    case CrgFormat::kLdfi:
-      return "LDFI";
-    case CrgFormat::kKrbi:
-      return "KRBI";
-    case CrgFormat::kKdbi:
-      return "KDBI";
-  }
-  return "?";
-}
-
-bool is_binary(CrgFormat format) {
-  return format == CrgFormat::kKrbi || format == CrgFormat::kKdbi;
-}
-std::size_t value_width(CrgFormat format) {  // characters or bytes per value
-  switch (format) {
-    case CrgFormat::kLrfi:
-      return 10;
-    case CrgFormat::kLdfi:
-      return 20;
-    case CrgFormat::kKrbi:
-      return 4;
-    case CrgFormat::kKdbi:
-      return 8;
-  }
-  return 10;
-}
-std::size_t values_per_record(CrgFormat format) { return kRecordBytes / value_width(format); }
 
 enum class ChannelKind { kSection, kSlope, kBanking, kDropped };
 
@@ -497,11 +463,12 @@ class Reader {
         double value = kNaN;
         if (!text.starts_with("*")) {
           const std::optional<double> parsed = parse_real(text);
-          if (!parsed || !(std::abs(*parsed) <= kMaxValue)) {
-            fail_line(line_number,
-                      fmt::format("value {} ('{}', characters {} to {}) is not a number within "
-                                  "+-{:g} m nor a missing-value placeholder starting with '*'",
-                                  i + 1, field, begin + 1, begin + field.size(), kMaxValue));
+          if (!parsed || !(std::abs(*parsed) <= kCrgMaxElevation_m)) {
+            fail_line(
+                line_number,
+                fmt::format("value {} ('{}', characters {} to {}) is not a number within "
+                            "+-{:g} m nor a missing-value placeholder starting with '*'",
+                            i + 1, field, begin + 1, begin + field.size(), kCrgMaxElevation_m));
           }
           value = *parsed;
         }
@@ -536,14 +503,14 @@ class Reader {
     const std::size_t per_record = values_per_record(format);
     const std::size_t channels = header.channels.size();
     const std::size_t bytes = content_.size() - header.data_offset;
-    if (bytes % kRecordBytes != 0) {
+    if (bytes % kCrgRecordBytes != 0) {
       fail(
           fmt::format("the {} data after the header (line {} on) are {} bytes, not a whole "
                       "number of {}-byte records; truncated?",
-                      format_name(format), header.data_line, bytes, kRecordBytes));
+                      format_name(format), header.data_line, bytes, kCrgRecordBytes));
     }
     if (bytes == 0) fail(fmt::format("no {} data after the header", format_name(format)));
-    const std::size_t records = bytes / kRecordBytes;
+    const std::size_t records = bytes / kCrgRecordBytes;
     const std::size_t values = bytes / size;
     const unsigned char* data =
         reinterpret_cast<const unsigned char*>(content_.data() + header.data_offset);
@@ -566,7 +533,7 @@ class Reader {
         fail(
             fmt::format("{} {}-byte records of {} data, but the u range (REFERENCE_LINE_START_U, "
                         "_END_U, _INCREMENT) gives {} rows of {} channels: {} records",
-                        records, kRecordBytes, format_name(format), rows, channels, needed));
+                        records, kCrgRecordBytes, format_name(format), rows, channels, needed));
       }
     } else {
       // Rows as the records hold; rows wholly within the last record's NaN padding are none.
@@ -590,11 +557,11 @@ class Reader {
     for (std::size_t row = 0; row < rows; ++row) {
       for (std::size_t c = 0; c < channels; ++c, ++k) {
         const double value = value_at(k);
-        if (!std::isnan(value) && !(std::abs(value) <= kMaxValue)) {
+        if (!std::isnan(value) && !(std::abs(value) <= kCrgMaxElevation_m)) {
           fail(
               fmt::format("record {} (byte {} of the data), row {}, channel {}: value {:g} is "
                           "not within +-{:g} m (NaN marks a missing value)",
-                          k / per_record + 1, k * size, row + 1, c + 1, value, kMaxValue));
+                          k / per_record + 1, k * size, row + 1, c + 1, value, kCrgMaxElevation_m));
         }
         store(grid, c, value);
       }
@@ -613,34 +580,6 @@ class Reader {
   bool has_slope_ = false;
   bool has_banking_ = false;
 };
-
-// LRFI: fixed point (7 decimals) where that keeps more digits than E notation; LDFI: E.
-std::string ascii_value(double value, CrgFormat format) {
-  if (std::isnan(value))
-    return format == CrgFormat::kLrfi ? fmt::format("{:>10}", "*missing*")
-                                      : fmt::format("{:>20}", "*missing*");
-  const double magnitude = std::abs(value);
-  if (magnitude < 1e-99) value = 0.0;  // a two-digit exponent keeps the width
-  if (format == CrgFormat::kLrfi) {
-    if (value == 0.0 || (magnitude >= 1e-3 && magnitude < 9.9999999)) {
-      return fmt::format("{:10.7f}", value);
-    }
-    return fmt::format("{:10.3E}", value);
-  }
-  return fmt::format("{:20.13E}", value);
-}
-
-void append_binary(std::string& out, double value, CrgFormat format) {
-  if (format == CrgFormat::kKrbi) {
-    const std::uint32_t bits =
-        std::isnan(value) ? 0x7FC00000u : std::bit_cast<std::uint32_t>(static_cast<float>(value));
-    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<char>(bits >> shift));
-  } else {
-    const std::uint64_t bits =
-        std::isnan(value) ? 0x7FF8000000000000ull : std::bit_cast<std::uint64_t>(value);
-    for (int shift = 56; shift >= 0; shift -= 8) out.push_back(static_cast<char>(bits >> shift));
-  }
-}
 
 }  // namespace
 
@@ -666,128 +605,6 @@ CrgGrid read_opencrg(const std::filesystem::path& path) {
   in.read(content.data(), static_cast<std::streamsize>(content.size()));
   content.resize(static_cast<std::size_t>(in.gcount()));
   return Reader(path, std::move(content)).read();
-}
-
-void write_opencrg(const CrgGrid& grid, const std::filesystem::path& path, CrgFormat format) {
-  const std::size_t n = grid.columns();
-  const std::size_t rows = grid.rows();
-  if (n == 0 || rows < 2 || grid.z_m.size() != rows * n || !(grid.u_increment_m > 0.0) ||
-      (!grid.slope.empty() && grid.slope.size() != rows) ||
-      (!grid.banking.empty() && grid.banking.size() != rows)) {
-    throw InputError(
-        fmt::format("{}: cannot write an inconsistent OpenCRG grid ({} long sections, "
-                    "{} elevations, {} slopes, {} bankings, u increment {:g})",
-                    path.string(), n, grid.z_m.size(), grid.slope.size(), grid.banking.size(),
-                    grid.u_increment_m));
-  }
-  for (double z : grid.z_m) {
-    if (!std::isnan(z) && !(std::abs(z) <= kMaxValue)) {
-      throw InputError(fmt::format("{}: cannot write elevation {:g} m (beyond +-{:g} m)",
-                                   path.string(), z, kMaxValue));
-    }
-  }
-  std::string out = "$CT\n";
-  std::istringstream comment(grid.comment.empty() ? "written by ridefit" : grid.comment);
-  for (std::string line; std::getline(comment, line);) {
-    out += (line.starts_with("$") || line.starts_with("*") ? " " : "") + line + "\n";
-  }
-  out += "$ROAD_CRG\n";
-  out += fmt::format("REFERENCE_LINE_START_U   = {}\n", grid.u_start_m);
-  out += fmt::format("REFERENCE_LINE_END_U     = {}\n",
-                     grid.u_start_m + static_cast<double>(rows - 1) * grid.u_increment_m);
-  out += fmt::format("REFERENCE_LINE_INCREMENT = {}\n", grid.u_increment_m);
-  out += fmt::format("LONG_SECTION_V_RIGHT     = {}\n", grid.v_m.front());
-  out += fmt::format("LONG_SECTION_V_LEFT      = {}\n", grid.v_m.back());
-  out += "$KD_DEFINITION\n";
-  out += fmt::format("#:{}\n", format_name(format));
-  out += fmt::format("U:reference line u,m,{},{}\n", grid.u_start_m, grid.u_increment_m);
-  if (!grid.slope.empty()) out += "D:reference line slope,m/m\n";
-  if (!grid.banking.empty()) out += "D:reference line banking,m/m\n";
-  for (double v : grid.v_m) out += fmt::format("D:long section at v = {},m\n", v);
-  out += "$\n";
-  out += std::string(kRecordBytes, '$') + "\n";
-
-  const std::size_t per_record = values_per_record(format);
-  std::vector<double> row;
-  std::size_t written = 0;  // binary: values in the current data block
-  for (std::size_t r = 0; r < rows; ++r) {
-    row.clear();
-    if (!grid.slope.empty()) row.push_back(grid.slope[r]);
-    if (!grid.banking.empty()) row.push_back(grid.banking[r]);
-    row.insert(row.end(), grid.z_m.begin() + static_cast<long>(r * n),
-               grid.z_m.begin() + static_cast<long>((r + 1) * n));
-    if (is_binary(format)) {
-      for (double value : row) append_binary(out, value, format);
-      written += row.size();
-    } else {
-      for (std::size_t k = 0; k < row.size(); ++k) {
-        out += ascii_value(row[k], format);
-        if ((k + 1) % per_record == 0 || k + 1 == row.size()) out += "\n";
-      }
-    }
-  }
-  if (is_binary(format)) {
-    for (; written % per_record != 0; ++written) append_binary(out, kNaN, format);
-  }
-
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file.write(out.data(), static_cast<std::streamsize>(out.size()));
-    if (!file) {
-      throw InputError(fmt::format("{}: cannot write (via {})", path.string(), temporary.string()));
-    }
-  }
-  std::filesystem::rename(temporary, path);
-}
-
-std::vector<double> crg_track(const CrgGrid& grid, double v_m, const std::string& source) {
-  const std::vector<double>& v = grid.v_m;
-  if (v.empty() || !(v_m >= v.front() && v_m <= v.back())) {
-    throw InputError(
-        fmt::format("{}: lateral position v = {:g} m is outside the long sections, "
-                    "v from {:g} to {:g} m",
-                    source, v_m, v.empty() ? kNaN : v.front(), v.empty() ? kNaN : v.back()));
-  }
-  std::size_t j = 0;
-  while (j + 1 < v.size() && v[j + 1] <= v_m) ++j;
-  const std::size_t k = std::min(j + 1, v.size() - 1);
-  const double w = k == j ? 0.0 : (v_m - v[j]) / (v[k] - v[j]);
-  const std::size_t rows = grid.rows();
-
-  const auto filled = [&](std::size_t column) {
-    std::vector<double> z(rows);
-    for (std::size_t r = 0; r < rows; ++r) z[r] = grid.z(r, column);
-    std::size_t previous = rows;  // the last valid row so far (rows: none)
-    for (std::size_t r = 0; r < rows; ++r) {
-      if (std::isnan(z[r])) continue;
-      if (previous == rows) {
-        std::fill(z.begin(), z.begin() + static_cast<long>(r), z[r]);  // hold the first
-      } else {
-        for (std::size_t m = previous + 1; m < r; ++m) {
-          const double a = static_cast<double>(m - previous) / static_cast<double>(r - previous);
-          z[m] = (1.0 - a) * z[previous] + a * z[r];
-        }
-      }
-      previous = r;
-    }
-    if (previous == rows) {
-      throw InputError(
-          fmt::format("{}: long section {} (v = {:g} m) has no valid elevation: all "
-                      "{} values from u = {:g} to {:g} m are missing",
-                      source, column + 1, v[column], rows, grid.u(0), grid.u(rows - 1)));
-    }
-    std::fill(z.begin() + static_cast<long>(previous) + 1, z.end(), z[previous]);  // hold the last
-    return z;
-  };
-
-  std::vector<double> track = filled(w < 1.0 ? j : k);
-  if (w > 0.0 && w < 1.0) {
-    const std::vector<double> right = filled(k);
-    for (std::size_t r = 0; r < rows; ++r) track[r] = (1.0 - w) * track[r] + w * right[r];
-  }
-  return track;
 }
 
 }  // namespace ridefit::road
