@@ -191,11 +191,11 @@ void read_friction(const io::YamlMap& friction, const TuningModel& base, TuningS
     const auto& fc = rows::coulomb_force_N;
     const auto& exponent = rows::dahl_exponent;
     if (friction.has(sigma0)) {
-      values.emplace_back(sigma0.key, friction.positive(sigma0.key_string()));
+      values.emplace_back(sigma0.key, friction.parameter(sigma0));
     }
     if (friction.has(fc)) values.emplace_back(fc.key, friction.parameter(fc));
     if (friction.has(exponent)) {
-      values.emplace_back(exponent.key, friction.number_in(exponent.key_string(), 0.2, 5.0));
+      values.emplace_back(exponent.key, friction.parameter(exponent));
     }
     if (values.empty()) {
       throw InputError(fmt::format(
