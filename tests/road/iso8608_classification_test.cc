@@ -83,6 +83,11 @@ TEST(Iso8608Classification, BadInputIsAnInputError) {
   const std::string message =
       ridefit::testing::input_error_message([&] { classify_iso8608(profile, options); });
   EXPECT_NE(message.find("longer than the profile"), std::string::npos) << message;
+  const RoadProfile coarse{{0.0, 10.0, 20.0, 30.0, 40.0}, {0.0, 0.01, 0.0, 0.01, 0.0}};
+  EXPECT_NE(ridefit::testing::input_error_message([&] {
+              classify_iso8608(coarse);
+            }).find("too short or too coarse"),
+            std::string::npos);
   RoadProfile reversed = profile;
   reversed.distance_m[5] = reversed.distance_m[3];
   EXPECT_NE(

@@ -41,6 +41,12 @@ Iso8608Classification classify_iso8608(const RoadProfile& profile,
         "ISO 8608 classification: the PSD segment ({} m) is longer than the profile ({} m)",
         segment, length));
   }
+  if (segment < 8.0 * spacing) {
+    throw InputError(fmt::format(
+        "ISO 8608 classification: a PSD segment of {} m holds under 8 samples at {} m spacing; "
+        "the profile ({} m) is too short or too coarse",
+        segment, spacing, length));
+  }
   const RoadProfile grid = is_uniform(profile, spacing) ? profile : uniform(profile, spacing);
 
   signal::WelchOptions welch;
