@@ -63,6 +63,11 @@ TEST(RoadCli, BadProfileIsExitTwo) {
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find("short.csv"), std::string::npos) << run.output;
 
+  const std::string profile = dir.write("profile.csv", sine_profile_csv());
+  run = run_cli("road " + profile + " --psd " + profile);  // would overwrite its input
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("--psd"), std::string::npos) << run.output;
+
   run = run_cli("road " + (dir.path() / "missing.csv").string());
   EXPECT_EQ(run.exit_code, 2) << run.output;
 }

@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -11,6 +10,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/road/international_roughness_index.h"
 #include "ridefit/road/iso8608_classification.h"
 #include "ridefit/road/road_limits.h"
@@ -52,17 +52,19 @@ road::RoadProfile read_profile(const std::string& file) {
   return profile;
 }
 
+// The spectrum as a CSV that reads back (CsvTable units); written atomically.
 void write_psd(const std::string& file, const road::Iso8608Classification& result) {
-  std::ofstream out(file);
-  if (!out) throw InputError(fmt::format("--psd: cannot write {}", file));
-  out << "spatial_frequency[cycles/m],psd[m^3],psd_lower[m^3],psd_upper[m^3]\n";
-  for (std::size_t k = 0; k < result.psd_m3.size(); ++k) {
-    out << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g}\n", result.spatial_frequency_cycles_per_m[k],
-                       result.psd_m3[k], result.psd_lower_m3[k], result.psd_upper_m3[k]);
-  }
+  io::CsvTable table;
+  table.add("spatial_frequency", "cycles/m", result.spatial_frequency_cycles_per_m);
+  table.add("psd", "m^3", result.psd_m3);
+  table.add("psd_lower", "m^3", result.psd_lower_m3);
+  table.add("psd_upper", "m^3", result.psd_upper_m3);
+  table.write(file);
 }
 
 void run(const RoadFlags& flags) {
+  io::RunOutputs outputs({flags.profile_file});
+  outputs.add_file(flags.psd_file, "--psd");
   const road::RoadProfile profile = read_profile(flags.profile_file);
   road::Iso8608ClassificationOptions psd_options;
   psd_options.segment_length_m = flags.psd_segment_m;
