@@ -16,6 +16,7 @@ void register_generate_lab(CLI::App& app);
 void register_optimise(CLI::App& app);
 void register_diagnose(CLI::App& app);
 void register_generate_hidden(CLI::App& app);
+void register_road(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
@@ -28,6 +29,7 @@ inline void register_subcommands(CLI::App& app) {
   register_optimise(app);
   register_diagnose(app);
   register_generate_hidden(app);
+  register_road(app);
 }
 
 }  // namespace ridefit::cli

@@ -1,0 +1,139 @@
+// ridefit road PROFILE.csv [--segment M] [--psd-segment M] [--psd out.csv] [--json]
+// The ISO 8608 class and the IRI (ASTM E1926) of a measured longitudinal road profile.
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "ridefit/common/errors.h"
+#include "ridefit/io/csv_table.h"
+#include "ridefit/io/output_paths.h"
+#include "ridefit/road/international_roughness_index.h"
+#include "ridefit/road/iso8608_classification.h"
+#include "ridefit/road/road_limits.h"
+#include "ridefit/road/road_profile.h"
+#include "subcommands.h"
+
+namespace ridefit::cli {
+namespace {
+
+struct RoadFlags {
+  std::string profile_file;
+  double segment_m = 100.0;
+  double psd_segment_m = 0.0;  // 0 = min(100 m, length/4)
+  std::string psd_file;
+  bool json = false;
+};
+
+const std::vector<double>& length_column(const io::CsvTable& table, const std::string& name) {
+  const io::CsvColumn& column = table.column(name);
+  if (column.unit != "m") {
+    throw InputError(fmt::format("{}: column '{}' is in {}, expected a length (m or mm)",
+                                 table.source().string(), name, column.unit));
+  }
+  return column.values;
+}
+
+road::RoadProfile read_profile(const std::string& file) {
+  road::check_data_file(file,
+                        "a road profile CSV file with a header row like distance[m],elevation[m] "
+                        "(lengths in m or mm)");
+  const io::CsvTable table = io::CsvTable::read(file);
+  road::RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
+  table.strictly_increasing("distance");  // names the file's row
+  try {
+    road::check_road_profile(profile, 4);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", file, e.what()));
+  }
+  return profile;
+}
+
+// The spectrum as a CSV that reads back (CsvTable units); written atomically.
+void write_psd(const std::string& file, const road::Iso8608Classification& result) {
+  io::CsvTable table;
+  table.add("spatial_frequency", "cycles/m", result.spatial_frequency_cycles_per_m);
+  table.add("psd", "m^3", result.psd_m3);
+  table.add("psd_lower", "m^3", result.psd_lower_m3);
+  table.add("psd_upper", "m^3", result.psd_upper_m3);
+  table.write(file);
+}
+
+void run(const RoadFlags& flags) {
+  io::RunOutputs outputs({flags.profile_file});
+  outputs.add_file(flags.psd_file, "--psd");
+  const road::RoadProfile profile = read_profile(flags.profile_file);
+  road::Iso8608ClassificationOptions psd_options;
+  psd_options.segment_length_m = flags.psd_segment_m;
+  road::IriOptions iri_options;
+  iri_options.segment_length_m = flags.segment_m;
+  road::Iso8608Classification iso;
+  road::InternationalRoughnessIndex iri;
+  try {
+    iso = road::classify_iso8608(profile, psd_options);
+    iri = road::international_roughness_index(profile, iri_options);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: {}", flags.profile_file, e.what()));
+  }
+  if (!flags.psd_file.empty()) write_psd(flags.psd_file, iso);
+
+  const std::string road_class(1, road::to_char(iso.road_class));
+  if (flags.json) {
+    nlohmann::json segments = nlohmann::json::array();
+    for (const auto& s : iri.segments) {
+      segments.push_back(
+          {{"start_m", s.start_m}, {"end_m", s.end_m}, {"iri_m_per_km", s.iri_m_per_km}});
+    }
+    const nlohmann::json summary = {
+        {"profile", flags.profile_file},
+        {"length_m", road::profile_length_m(profile)},
+        {"iso8608",
+         {{"class", road_class},
+          {"reference_psd_m3", iso.reference_psd_m3},
+          {"reference_cycles_per_m", road::kIso8608ReferenceCyclesPerM},
+          {"waviness", iso.waviness},
+          {"free_fit_reference_psd_m3", iso.free_fit_reference_psd_m3},
+          {"band_cycles_per_m", {iso.band_low_cycles_per_m, iso.band_high_cycles_per_m}},
+          {"psd_segment_m", iso.segment_length_m}}},
+        {"iri",
+         {{"iri_m_per_km", iri.iri_m_per_km},
+          {"spacing_m", iri.spacing_m},
+          {"segments", segments}}}};
+    std::cout << summary.dump(2) << "\n";
+    return;
+  }
+  std::cout << fmt::format("profile        {} ({:.1f} m)\n", flags.profile_file,
+                           road::profile_length_m(profile));
+  std::cout << fmt::format("ISO 8608 class {}\n", road_class);
+  std::cout << fmt::format(
+      "Gd(0.1)        {:.4g} m^3 (waviness 2, {:.4g}–{:.4g} cycles/m, {} bins)\n",
+      iso.reference_psd_m3, iso.band_low_cycles_per_m, iso.band_high_cycles_per_m, iso.fit_bins);
+  std::cout << fmt::format("free fit       Gd(0.1) {:.4g} m^3, waviness {:.3f}\n",
+                           iso.free_fit_reference_psd_m3, iso.waviness);
+  std::cout << fmt::format("IRI            {:.3f} m/km\n", iri.iri_m_per_km);
+  std::cout << fmt::format("{:>10} {:>10} {:>12}\n", "start[m]", "end[m]", "IRI[m/km]");
+  for (const auto& s : iri.segments) {
+    std::cout << fmt::format("{:>10.1f} {:>10.1f} {:>12.3f}\n", s.start_m, s.end_m, s.iri_m_per_km);
+  }
+}
+
+}  // namespace
+
+void register_road(CLI::App& app) {
+  auto flags = std::make_shared<RoadFlags>();
+  CLI::App* command = app.add_subcommand(
+      "road", "ISO 8608 class and IRI (ASTM E1926) of a road profile CSV (distance, elevation)");
+  command->add_option("profile", flags->profile_file, "Profile CSV: distance[m],elevation[m]")
+      ->required();
+  command->add_option("--segment", flags->segment_m, "IRI reporting segment in m (default 100)");
+  command->add_option("--psd-segment", flags->psd_segment_m,
+                      "Welch segment for the PSD in m (default min(100, length/4))");
+  command->add_option("--psd", flags->psd_file, "Write the PSD and its 90 % interval to a CSV");
+  command->add_flag("--json", flags->json, "Print the results as JSON");
+  command->callback([flags] { run(*flags); });
+}
+
+}  // namespace ridefit::cli
