@@ -1,12 +1,17 @@
-// `ridefit road`: the ISO 8608 class and IRI of a profile CSV; bad input is exit 2.
+// `ridefit road`: the ISO 8608 class and IRI of a profile CSV or an OpenCRG track; bad input is
+// exit 2.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
 
+#include "ridefit/io/gnuplot_figure.h"
+#include "ridefit/road/opencrg_file.h"
 #include "support/cli_runner.h"
 #include "support/temp_dir.h"
 
@@ -47,6 +52,52 @@ TEST(RoadCli, PrintsClassAndIriPerSegment) {
   ASSERT_EQ(json.exit_code, 0) << json.output;
   EXPECT_NE(json.output.find("\"iri_m_per_km\""), std::string::npos) << json.output;
   EXPECT_NE(json.output.find("\"class\""), std::string::npos) << json.output;
+}
+
+double whole_iri(const CliRun& run) {
+  return nlohmann::json::parse(run.output).at("iri").at("iri_m_per_km").get<double>();
+}
+
+// An OpenCRG grid (KDBI, 8-byte reals) of two long sections at v = -1 and +1 m: the track at
+// v = 0.5 is 3/4 of the left one and 1/4 of the right, and `ridefit road` of the grid equals
+// `ridefit road` of that track written as a CSV.
+TEST(RoadCli, AnOpenCrgTrackIsEvaluatedLikeTheSameProfileAsCsv) {
+  testing::TempDir dir("road_cli");
+  road::CrgGrid grid;
+  grid.u_increment_m = 0.1;
+  grid.v_m = {-1.0, 1.0};
+  std::string csv = "distance[m],elevation[m]\n";
+  for (int k = 0; k <= 5000; ++k) {
+    const double x = 0.1 * k;
+    const double right = 0.004 * std::sin(2.0 * std::numbers::pi * x / 12.0);
+    const double left = 0.002 * std::sin(2.0 * std::numbers::pi * x / 3.0 + 1.0);
+    grid.z_m.insert(grid.z_m.end(), {right, left});
+    csv += fmt::format("{},{}\n", x, 0.25 * right + 0.75 * left);
+  }
+  grid.u_end_m = 500.0;
+  const fs::path crg = dir.path() / "road.crg";
+  road::write_opencrg(grid, crg, road::CrgFormat::kKdbi);
+  const std::string profile = dir.write("track.csv", csv);
+
+  const CliRun from_crg = run_cli("road " + crg.string() + " --lateral-offset 0.5 --json");
+  const CliRun from_csv = run_cli("road " + profile + " --json");
+  ASSERT_EQ(from_crg.exit_code, 0) << from_crg.output;
+  ASSERT_EQ(from_csv.exit_code, 0) << from_csv.output;
+  EXPECT_NEAR(whole_iri(from_crg), whole_iri(from_csv), 1e-9 * whole_iri(from_csv));
+  EXPECT_GT(whole_iri(from_crg), 0.1);
+
+  const CliRun outside = run_cli("road " + crg.string() + " --lateral-offset 1.5");
+  EXPECT_EQ(outside.exit_code, 2) << outside.output;
+  EXPECT_NE(outside.output.find("outside the long sections"), std::string::npos) << outside.output;
+  const CliRun csv_offset = run_cli("road " + profile + " --lateral-offset 0.5");
+  EXPECT_EQ(csv_offset.exit_code, 2) << csv_offset.output;
+
+  if (io::gnuplot_available()) {
+    const fs::path figure = dir.path() / "road.png";
+    const CliRun plotted = run_cli("road " + crg.string() + " --plot " + figure.string());
+    ASSERT_EQ(plotted.exit_code, 0) << plotted.output;
+    EXPECT_GT(fs::file_size(figure), 1000u);
+  }
 }
 
 TEST(RoadCli, BadProfileIsExitTwo) {

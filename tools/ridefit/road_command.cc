@@ -1,20 +1,26 @@
-// ridefit road PROFILE.csv [--segment M] [--psd-segment M] [--psd out.csv] [--json]
+// ridefit road PROFILE.csv|ROAD.crg [--lateral-offset M] [--segment M] [--psd-segment M]
+//              [--psd out.csv] [--plot FIG.png|svg] [--json]
 // The ISO 8608 class and the IRI (ASTM E1926) of a measured longitudinal road profile.
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/road/international_roughness_index.h"
 #include "ridefit/road/iso8608_classification.h"
-#include "ridefit/road/road_limits.h"
 #include "ridefit/road/road_profile.h"
+#include "ridefit/road/road_profile_file.h"
+#include "ridefit/study/road_profile_figure.h"
 #include "subcommands.h"
 
 namespace ridefit::cli {
@@ -22,35 +28,13 @@ namespace {
 
 struct RoadFlags {
   std::string profile_file;
-  double segment_m = 100.0;
+  std::optional<double> lateral_offset_m;
+  double segment_m = 0.0;      // 0 = 100 m, or the whole profile when it is shorter
   double psd_segment_m = 0.0;  // 0 = min(100 m, length/4)
   std::string psd_file;
+  std::string plot_file;
   bool json = false;
 };
-
-const std::vector<double>& length_column(const io::CsvTable& table, const std::string& name) {
-  const io::CsvColumn& column = table.column(name);
-  if (column.unit != "m") {
-    throw InputError(fmt::format("{}: column '{}' is in {}, expected a length (m or mm)",
-                                 table.source().string(), name, column.unit));
-  }
-  return column.values;
-}
-
-road::RoadProfile read_profile(const std::string& file) {
-  road::check_data_file(file,
-                        "a road profile CSV file with a header row like distance[m],elevation[m] "
-                        "(lengths in m or mm)");
-  const io::CsvTable table = io::CsvTable::read(file);
-  road::RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
-  table.strictly_increasing("distance");  // names the file's row
-  try {
-    road::check_road_profile(profile, 4);
-  } catch (const InputError& e) {
-    throw InputError(fmt::format("{}: {}", file, e.what()));
-  }
-  return profile;
-}
 
 // The spectrum as a CSV that reads back (CsvTable units); written atomically.
 void write_psd(const std::string& file, const road::Iso8608Classification& result) {
@@ -65,11 +49,18 @@ void write_psd(const std::string& file, const road::Iso8608Classification& resul
 void run(const RoadFlags& flags) {
   io::RunOutputs outputs({flags.profile_file});
   outputs.add_file(flags.psd_file, "--psd");
-  const road::RoadProfile profile = read_profile(flags.profile_file);
+  outputs.add_plot(flags.plot_file, "--plot");
+  if (flags.segment_m < 0.0 || !std::isfinite(flags.segment_m)) {
+    throw InputError(fmt::format("--segment {}: expected a length > 0 in m", flags.segment_m));
+  }
+  const road::RoadProfile profile =
+      road::load_road_profile(flags.profile_file, flags.lateral_offset_m);
   road::Iso8608ClassificationOptions psd_options;
   psd_options.segment_length_m = flags.psd_segment_m;
   road::IriOptions iri_options;
-  iri_options.segment_length_m = flags.segment_m;
+  iri_options.segment_length_m = flags.segment_m > 0.0 ? flags.segment_m
+                                                       : std::min(iri_options.segment_length_m,
+                                                                  road::profile_length_m(profile));
   road::Iso8608Classification iso;
   road::InternationalRoughnessIndex iri;
   try {
@@ -79,6 +70,9 @@ void run(const RoadFlags& flags) {
     throw InputError(fmt::format("{}: {}", flags.profile_file, e.what()));
   }
   if (!flags.psd_file.empty()) write_psd(flags.psd_file, iso);
+  if (!flags.plot_file.empty()) {
+    io::draw_figure(study::road_profile_figure(flags.profile_file, iso, iri), flags.plot_file);
+  }
 
   const std::string road_class(1, road::to_char(iso.road_class));
   if (flags.json) {
@@ -125,13 +119,21 @@ void run(const RoadFlags& flags) {
 void register_road(CLI::App& app) {
   auto flags = std::make_shared<RoadFlags>();
   CLI::App* command = app.add_subcommand(
-      "road", "ISO 8608 class and IRI (ASTM E1926) of a road profile CSV (distance, elevation)");
-  command->add_option("profile", flags->profile_file, "Profile CSV: distance[m],elevation[m]")
+      "road", "ISO 8608 class and IRI (ASTM E1926) of a road profile (CSV or an OpenCRG track)");
+  command
+      ->add_option("profile", flags->profile_file,
+                   "Profile CSV (distance[m],elevation[m]) or OpenCRG road (.crg)")
       ->required();
-  command->add_option("--segment", flags->segment_m, "IRI reporting segment in m (default 100)");
+  command->add_option("--lateral-offset", flags->lateral_offset_m,
+                      "OpenCRG: the track's lateral position v in m (default 0, the reference "
+                      "line; interpolated between long sections)");
+  command->add_option("--segment", flags->segment_m,
+                      "IRI reporting segment in m (default 100, or the whole profile if shorter)");
   command->add_option("--psd-segment", flags->psd_segment_m,
                       "Welch segment for the PSD in m (default min(100, length/4))");
   command->add_option("--psd", flags->psd_file, "Write the PSD and its 90 % interval to a CSV");
+  command->add_option("--plot", flags->plot_file,
+                      "Figure (.png or .svg): the PSD with the ISO 8608 classes, IRI per segment");
   command->add_flag("--json", flags->json, "Print the results as JSON");
   command->callback([flags] { run(*flags); });
 }
