@@ -6,9 +6,9 @@
 #include <string>
 
 #include "ridefit/common/errors.h"
-#include "ridefit/io/csv_table.h"
 #include "ridefit/road/resample.h"
 #include "ridefit/road/road_limits.h"
+#include "ridefit/road/road_profile_file.h"
 
 namespace ridefit::road {
 namespace {
@@ -16,15 +16,6 @@ namespace {
 constexpr std::size_t kMinimumPoints = 5;  // the B-spline's end-slope estimate needs 5
 // Elevations beyond this are no road (and would overflow the spline's arithmetic near 1e308).
 constexpr double kMaxElevation_m = 1e4;
-
-const std::vector<double>& length_column(const io::CsvTable& table, const std::string& name) {
-  const io::CsvColumn& column = table.column(name);
-  if (column.unit != "m") {
-    throw InputError(fmt::format("{}: column '{}' is in {}, expected a length (m or mm)",
-                                 table.source().string(), name, column.unit));
-  }
-  return column.values;
-}
 
 }  // namespace
 
@@ -97,20 +88,13 @@ SpatialProfileRoad make_profile_road(std::span<const double> distance_m,
 
 SpatialProfileRoad load_profile_road(const std::filesystem::path& csv_file,
                                      const ProfileRoadParameters& parameters) {
-  check_data_file(csv_file, fmt::format("a road profile CSV file with a header row like "
-                                        "distance[m],elevation[mm] (lengths in m or mm) and at "
-                                        "least {} data rows",
-                                        kMinimumPoints));
-  const io::CsvTable table = io::CsvTable::read(csv_file);
-  const std::vector<double>& distance = length_column(table, "distance");
-  const std::vector<double>& elevation = length_column(table, "elevation");
-  table.strictly_increasing("distance");
-  if (table.rows() < kMinimumPoints) {
+  const RoadProfile profile = read_profile_csv(csv_file);
+  if (profile.distance_m.size() < kMinimumPoints) {
     throw InputError(fmt::format("{}: {} data rows, a road profile needs at least {}",
-                                 csv_file.string(), table.rows(), kMinimumPoints));
+                                 csv_file.string(), profile.distance_m.size(), kMinimumPoints));
   }
   try {
-    return make_profile_road(distance, elevation, parameters);
+    return make_profile_road(profile.distance_m, profile.elevation_m, parameters);
   } catch (const InputError& e) {
     const std::string message = e.what();
     if (message.starts_with("key")) throw;  // about a YAML key, not the file

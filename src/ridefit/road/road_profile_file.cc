@@ -22,25 +22,6 @@ bool is_opencrg(const std::filesystem::path& path) {
   return extension == ".crg";
 }
 
-const std::vector<double>& length_column(const io::CsvTable& table, const std::string& name) {
-  const io::CsvColumn& column = table.column(name);
-  if (column.unit != "m") {
-    throw InputError(fmt::format("{}: column '{}' is in {}, expected a length (m or mm)",
-                                 table.source().string(), name, column.unit));
-  }
-  return column.values;
-}
-
-RoadProfile csv_profile(const std::filesystem::path& path) {
-  check_data_file(path,
-                  "a road profile CSV file with a header row like distance[m],elevation[m] "
-                  "(lengths in m or mm), or an OpenCRG file (.crg)");
-  const io::CsvTable table = io::CsvTable::read(path);
-  RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
-  table.strictly_increasing("distance");  // names the file's row
-  return profile;
-}
-
 RoadProfile opencrg_profile(const std::filesystem::path& path, double lateral_offset_m) {
   const CrgGrid grid = read_opencrg(path);
   RoadProfile profile;
@@ -50,7 +31,26 @@ RoadProfile opencrg_profile(const std::filesystem::path& path, double lateral_of
   return profile;
 }
 
+const std::vector<double>& length_column(const io::CsvTable& table, const std::string& name) {
+  const io::CsvColumn& column = table.column(name);
+  if (column.unit != "m") {
+    throw InputError(fmt::format("{}: column '{}' is in {}, expected a length (m or mm)",
+                                 table.source().string(), name, column.unit));
+  }
+  return column.values;
+}
+
 }  // namespace
+
+RoadProfile read_profile_csv(const std::filesystem::path& path) {
+  check_data_file(path,
+                  "a road profile CSV file with a header row like distance[m],elevation[mm] "
+                  "(lengths in m or mm)");
+  const io::CsvTable table = io::CsvTable::read(path);
+  RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
+  table.strictly_increasing("distance");  // names the file's row
+  return profile;
+}
 
 RoadProfile load_road_profile(const std::filesystem::path& path,
                               std::optional<double> lateral_offset_m) {
@@ -64,7 +64,7 @@ RoadProfile load_road_profile(const std::filesystem::path& path,
           "one track already",
           path.string()));
     }
-    profile = csv_profile(path);
+    profile = read_profile_csv(path);
   }
   try {
     check_road_profile(profile, 4);
