@@ -100,6 +100,46 @@ TEST(RoadCli, AnOpenCrgTrackIsEvaluatedLikeTheSameProfileAsCsv) {
   }
 }
 
+// The road channel of a simulated drive (CVODE's output at 1 kHz of a `type: profile` road at
+// 72 km/h, a different path from the profile's own samples) evaluates as the profile driven.
+TEST(RoadCli, AVehicleRecordsRoadChannelIsEvaluatedAtItsSpeed) {
+  testing::TempDir dir("road_cli");
+  const std::string profile = dir.write("profile.csv", sine_profile_csv());
+  const std::string excitation =
+      dir.write("drive.yaml", "type: profile\nfile: profile.csv\nspeed_km_per_h: 72\n");
+  const fs::path record = dir.path() / "record.csv";
+  const CliRun drive =
+      run_cli(fmt::format("simulate {}/datasets/vehicles/passat_b8_front.yaml {} -o {}",
+                          RIDEFIT_SOURCE_DIR, excitation, record.string()));
+  ASSERT_EQ(drive.exit_code, 0) << drive.output;
+
+  const CliRun from_record = run_cli("road " + record.string() + " --speed 72km/h --json");
+  const CliRun from_profile = run_cli("road " + profile + " --json");
+  ASSERT_EQ(from_record.exit_code, 0) << from_record.output;
+  ASSERT_EQ(from_profile.exit_code, 0) << from_profile.output;
+  EXPECT_NEAR(whole_iri(from_record), whole_iri(from_profile), 0.01 * whole_iri(from_profile));
+  const auto road_class = [](const CliRun& run) {
+    return nlohmann::json::parse(run.output).at("iso8608").at("class").get<std::string>();
+  };
+  EXPECT_EQ(road_class(from_record), road_class(from_profile));
+  // The same speed in m/s.
+  const CliRun in_m_per_s = run_cli("road " + record.string() + " --speed 20m/s --json");
+  ASSERT_EQ(in_m_per_s.exit_code, 0) << in_m_per_s.output;
+  EXPECT_DOUBLE_EQ(whole_iri(in_m_per_s), whole_iri(from_record));
+
+  const auto refused = [](const std::string& args, const std::string& expected) {
+    const CliRun run = run_cli("road " + args);
+    EXPECT_EQ(run.exit_code, 2) << args << "\n" << run.output;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << args << "\n" << run.output;
+  };
+  refused(record.string(), "--speed");                        // no speed
+  refused(record.string() + " --speed 72", "with its unit");  // no unit
+  refused(record.string() + " --speed -3m/s", "0 < speed");   // not a speed
+  refused(record.string() + " --speed 72km/h --channel body_acc", "expected a length");
+  refused(record.string() + " --speed 72km/h --channel tyre", "road channel 'tyre'");
+  refused(profile + " --speed 72km/h", "only to a vehicle record");  // over distance already
+}
+
 TEST(RoadCli, BadProfileIsExitTwo) {
   testing::TempDir dir("road_cli");
   const std::string reversed =

@@ -1,16 +1,21 @@
-// ridefit road PROFILE.csv|ROAD.crg [--lateral-offset M] [--segment M] [--psd-segment M]
-//              [--psd out.csv] [--plot FIG.png|svg] [--json]
-// The ISO 8608 class and the IRI (ASTM E1926) of a measured longitudinal road profile.
+// ridefit road PROFILE.csv|ROAD.crg|RECORD.csv [--lateral-offset M] [--speed V --channel C]
+//              [--segment M] [--psd-segment M] [--psd out.csv] [--plot FIG.png|svg] [--json]
+// The ISO 8608 class and the IRI (ASTM E1926) of a measured longitudinal road profile: a
+// profile over distance, an OpenCRG track, or the road channel of a vehicle record over time
+// driven at a known speed.
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <regex>
 #include <string>
+#include <system_error>
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
@@ -29,6 +34,8 @@ namespace {
 struct RoadFlags {
   std::string profile_file;
   std::optional<double> lateral_offset_m;
+  std::string speed;  // with its unit: 50km/h, 13.9m/s; empty = not given
+  std::string channel;
   double segment_m = 0.0;      // 0 = 100 m, or the whole profile when it is shorter
   double psd_segment_m = 0.0;  // 0 = min(100 m, length/4)
   std::string psd_file;
@@ -46,6 +53,24 @@ void write_psd(const std::string& file, const road::Iso8608Classification& resul
   table.write(file);
 }
 
+// `--speed 50km/h` or `--speed 13.9m/s` in m/s; a bare number is refused, since both units are
+// common.
+std::optional<double> speed_m_per_s(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  static const std::regex pattern(R"(\s*([-+0-9.eE]+)\s*(m/s|km/h)\s*)");
+  std::smatch match;
+  double value = 0.0;
+  if (std::regex_match(text, match, pattern)) {
+    const std::string number = match[1].str();
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (error == std::errc() && end == number.data() + number.size()) {
+      return match[2].str() == "km/h" ? value / 3.6 : value;
+    }
+  }
+  throw InputError(fmt::format(
+      "--speed {}: expected a speed with its unit, e.g. --speed 50km/h or --speed 13.9m/s", text));
+}
+
 void run(const RoadFlags& flags) {
   io::RunOutputs outputs({flags.profile_file});
   outputs.add_file(flags.psd_file, "--psd");
@@ -53,8 +78,13 @@ void run(const RoadFlags& flags) {
   if (flags.segment_m < 0.0 || !std::isfinite(flags.segment_m)) {
     throw InputError(fmt::format("--segment {}: expected a length > 0 in m", flags.segment_m));
   }
-  const road::RoadProfile profile =
-      road::load_road_profile(flags.profile_file, flags.lateral_offset_m);
+  road::RoadProfile profile;
+  try {
+    profile = road::load_road_profile(
+        flags.profile_file, {flags.lateral_offset_m, speed_m_per_s(flags.speed), flags.channel});
+  } catch (const road::MissingDrivingSpeed& e) {
+    throw InputError(fmt::format("{}: give it with --speed, e.g. --speed 50km/h", e.what()));
+  }
   road::Iso8608ClassificationOptions psd_options;
   psd_options.segment_length_m = flags.psd_segment_m;
   road::IriOptions iri_options;
@@ -119,14 +149,23 @@ void run(const RoadFlags& flags) {
 void register_road(CLI::App& app) {
   auto flags = std::make_shared<RoadFlags>();
   CLI::App* command = app.add_subcommand(
-      "road", "ISO 8608 class and IRI (ASTM E1926) of a road profile (CSV or an OpenCRG track)");
+      "road",
+      "ISO 8608 class and IRI (ASTM E1926) of a road profile (CSV, an OpenCRG track, or a "
+      "vehicle record's road channel)");
   command
       ->add_option("profile", flags->profile_file,
-                   "Profile CSV (distance[m],elevation[m]) or OpenCRG road (.crg)")
+                   "Profile CSV (distance[m],elevation[m]), OpenCRG road (.crg), or vehicle "
+                   "record over time (time[s],road[m],…; needs --speed)")
       ->required();
   command->add_option("--lateral-offset", flags->lateral_offset_m,
                       "OpenCRG: the track's lateral position v in m (default 0, the reference "
                       "line; interpolated between long sections)");
+  command->add_option("--speed", flags->speed,
+                      "Vehicle record: the speed it was driven at, with its unit (50km/h, "
+                      "13.9m/s); distance = speed × time");
+  command->add_option("--channel", flags->channel,
+                      "Vehicle record: the road channel (default road, or road_front when the "
+                      "record has no road channel)");
   command->add_option("--segment", flags->segment_m,
                       "IRI reporting segment in m (default 100, or the whole profile if shorter)");
   command->add_option("--psd-segment", flags->psd_segment_m,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,59 @@ const std::vector<double>& length_column(const io::CsvTable& table, const std::s
   return column.values;
 }
 
+// The road channel of a record over time, over the distance driven at `speed_m_per_s`.
+RoadProfile record_profile(const io::CsvTable& table, const RoadProfileSource& source) {
+  const std::string file = table.source().string();
+  std::string channel = source.channel;
+  if (channel.empty())
+    channel = !table.has("road") && table.has("road_front") ? "road_front" : "road";
+  if (!table.has(channel)) {
+    throw InputError(fmt::format(
+        "{}: a vehicle record (a time column) without a road channel '{}'; name the column "
+        "that holds the road elevation",
+        file, channel));
+  }
+  if (!source.speed_m_per_s) {
+    throw MissingDrivingSpeed(fmt::format(
+        "{}: a vehicle record over time; its channel '{}' becomes a profile over distance "
+        "only with the speed it was driven at",
+        file, channel));
+  }
+  const double speed = *source.speed_m_per_s;
+  if (!std::isfinite(speed) || speed <= 0.0 || speed > kMaxSpeed_m_per_s) {
+    throw InputError(fmt::format("{}: driving speed {} m/s, expected 0 < speed <= {} m/s", file,
+                                 speed, kMaxSpeed_m_per_s));
+  }
+  const std::vector<double>& time = table.time_s();  // names the row that goes back
+  RoadProfile profile;
+  profile.elevation_m = length_column(table, channel);
+  profile.distance_m.reserve(time.size());
+  for (const double t : time) profile.distance_m.push_back(speed * (t - time.front()));
+  return profile;
+}
+
+// A CSV: a profile over distance, or a vehicle record over time.
+RoadProfile csv_profile(const std::filesystem::path& path, const RoadProfileSource& source) {
+  if (source.lateral_offset_m) {
+    throw InputError(fmt::format(
+        "{}: a lateral offset picks a track of an OpenCRG grid (.crg); a CSV is one track "
+        "already",
+        path.string()));
+  }
+  check_data_file(path,
+                  "a road profile CSV file with a header row like distance[m],elevation[mm], or a "
+                  "vehicle record like time[s],road[mm],body_acc[m/s^2] (lengths in m or mm)");
+  const io::CsvTable table = io::CsvTable::read(path);
+  if (!table.has("distance") && table.has("time")) return record_profile(table, source);
+  if (source.speed_m_per_s || !source.channel.empty()) {
+    throw InputError(fmt::format(
+        "{}: a profile over distance; a driving speed and a channel apply only to a vehicle "
+        "record over time (a time column)",
+        path.string()));
+  }
+  return read_profile_csv(path);
+}
+
 }  // namespace
 
 RoadProfile read_profile_csv(const std::filesystem::path& path) {
@@ -52,19 +106,18 @@ RoadProfile read_profile_csv(const std::filesystem::path& path) {
   return profile;
 }
 
-RoadProfile load_road_profile(const std::filesystem::path& path,
-                              std::optional<double> lateral_offset_m) {
+RoadProfile load_road_profile(const std::filesystem::path& path, const RoadProfileSource& source) {
   RoadProfile profile;
   if (is_opencrg(path)) {
-    profile = opencrg_profile(path, lateral_offset_m.value_or(0.0));
-  } else {
-    if (lateral_offset_m) {
+    if (source.speed_m_per_s || !source.channel.empty()) {
       throw InputError(fmt::format(
-          "{}: a lateral offset picks a track of an OpenCRG grid (.crg); a profile CSV is "
-          "one track already",
+          "{}: an OpenCRG road is over distance; a driving speed and a channel apply only to a "
+          "vehicle record over time",
           path.string()));
     }
-    profile = read_profile_csv(path);
+    profile = opencrg_profile(path, source.lateral_offset_m.value_or(0.0));
+  } else {
+    profile = csv_profile(path, source);
   }
   try {
     check_road_profile(profile, 4);
