@@ -1,0 +1,211 @@
+"""ridefit: vehicle vertical dynamics with suspension friction, from Python.
+
+The C++ library (the `ridefit` command's) with NumPy arrays in and out:
+
+    import ridefit
+    car = ridefit.load_model("datasets/vehicles/passat_b8_front.yaml")
+    road = ridefit.load_excitation("datasets/excitations/smooth_road_seed001.yaml")
+    run = ridefit.simulate(car, road)            # run["body_acc"], run.statistics
+    psd = ridefit.welch_psd(run["body_acc"], 1000.0, segment_s=4.0)
+
+Bad input raises ridefit.InputError (a ValueError), a failed run ridefit.RunError (a
+RuntimeError), each with the message the command line prints. Long calls release the GIL.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+
+from ._ridefit import (  # noqa: F401  (re-exported)
+    InputError,
+    Model,
+    Road,
+    RunError,
+    __version__,
+    apply_weighting,
+    load_excitation,
+    load_hysteresis_record,
+    measured_road,
+    minimum_sample_rate_Hz,
+    model_from_dict,
+    road_from_dict,
+    running_rms,
+    vibration_metrics,
+    weighting_magnitude,
+    welch_psd,
+)
+from ._ridefit import load_model as _load_model
+from ._ridefit import modes as _modes
+from . import _ridefit
+
+PathLike = Union[str, "os.PathLike[str]"]
+ModelLike = Union[Model, PathLike, Mapping[str, Any]]
+RoadLike = Union[Road, PathLike, Mapping[str, Any]]
+
+__all__ = [
+    "InputError", "RunError", "Model", "Road", "SimulationResult", "load_model",
+    "model_from_dict", "modes", "load_excitation", "road_from_dict", "measured_road", "simulate",
+    "welch_psd", "weighting_magnitude", "apply_weighting", "minimum_sample_rate_Hz",
+    "vibration_metrics", "running_rms", "load_hysteresis_record", "fit_hysteresis", "fit_psd",
+    "diagnose", "optimise",
+]
+
+
+def load_model(path: PathLike, overrides: Optional[Mapping[str, Any]] = None,
+               damper_state: str = "") -> Model:
+    """Reads a model file (YAML, quarter or half car), with the CLI's --set overrides and
+    --damper-state. Raises InputError with the CLI's message for a bad file."""
+    return _load_model(os.fspath(path), dict(overrides or {}), damper_state)
+
+
+def _model(model: ModelLike) -> Model:
+    if isinstance(model, Model):
+        return model
+    if isinstance(model, Mapping):
+        return model_from_dict(dict(model))
+    return load_model(model)
+
+
+def _road(road: RoadLike) -> Road:
+    if isinstance(road, Road):
+        return road
+    if isinstance(road, Mapping):
+        return road_from_dict(dict(road))
+    return load_excitation(os.fspath(road))
+
+
+def modes(model: ModelLike, state: str = "") -> Dict[str, Any]:
+    """Eigenfrequencies and damping ratios of the linear slip and stick quarter car, as
+    `ridefit modes MODEL --json` prints them. state: '' (both), 'slip' or 'stick'."""
+    return _modes(_model(model), state)
+
+
+class SimulationResult(dict):
+    """Every channel of a run as a float64 array under its CSV name (`ridefit simulate -o`):
+    time, road, body_acc, wheel_acc, travel, tyre_force, damper_force, friction_force,
+    top_mount_deflection, stuck (quarter car; the half car's are road_front, seat_acc, ...).
+
+    Attributes: units ({channel: SI unit}), summary (`ridefit simulate --json`'s structure),
+    statistics (the solver's: steps, right-hand-side evaluations, ...), notes (what the CLI
+    prints as `note:` on stderr)."""
+
+    units: Dict[str, str]
+    summary: Dict[str, Any]
+    statistics: Dict[str, Any]
+    notes: List[str]
+
+    def structured(self):
+        """The channels as one NumPy structured array (one field per channel)."""
+        import numpy as np
+
+        names = list(self.keys())
+        out = np.empty(len(self["time"]), dtype=[(name, np.float64) for name in names])
+        for name in names:
+            out[name] = self[name]
+        return out
+
+
+def simulate(model: ModelLike, road: RoadLike, output_rate_Hz: float = 1000.0,
+             duration_s: float = 0.0, method: str = "esdirk", rtol: float = 1e-5,
+             step_s: float = 1e-4, rear_delay_s: Optional[float] = None) -> SimulationResult:
+    """Simulates a quarter or half car over a road from static equilibrium at rest, as
+    `ridefit simulate MODEL EXCITATION` does (same defaults: 1000 Hz output, the road's
+    duration, the esdirk integrator at rtol 1e-5; method 'cvode' or 'rk4' with step_s).
+    rear_delay_s: a half car on a road given over time. The GIL is released while it runs."""
+    channels, units, summary, notes = _ridefit._simulate(
+        _model(model), _road(road), float(output_rate_Hz), float(duration_s), method,
+        float(rtol), float(step_s), rear_delay_s)
+    result = SimulationResult(channels)
+    result.units = units
+    result.summary = summary
+    result.statistics = summary["solver"]
+    result.notes = notes
+    return result
+
+
+def _record(record: Union[PathLike, Mapping[str, Any]]):
+    if isinstance(record, Mapping):
+        return dict(record)
+    return os.fspath(record)
+
+
+def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], model: ModelLike,
+                   free: Iterable[str], per_file: Iterable[str] = (),
+                   bounds: Optional[Mapping[str, Tuple[float, float]]] = None,
+                   starts: Optional[Mapping[str, float]] = None, loss: str = "none",
+                   loss_scale_N: float = 5.0, rtol: float = 1e-6, interpolation: str = "spline",
+                   max_iterations: int = 100, compression_mm: Iterable[float] = (),
+                   max_nrmse_percent: float = 10.0) -> Dict[str, Any]:
+    """Fits the strut's parameters to rig records, as `ridefit fit hysteresis --json` does.
+
+    records: one or a list of records, each a CSV path or a dict of arrays {'time_s',
+    'displacement_m', 'force_N'[, 'command', 'command_unit', 'source']} (extension and
+    tension positive). model: the start values (a Model, path or dict). free: parameter names
+    (e.g. ['dahl_sigma0_N_per_m', 'coulomb_force_N']); per_file, bounds {name: (lo, hi)},
+    starts {name: value}, loss ('none', 'huber', 'cauchy'), ... as the CLI's flags.
+
+    Returns the CLI's JSON structure (parameters with standard errors, correlation, cost,
+    nrmse_percent, explains_data, ...) plus 'fitted_force_N' (an array per record) and
+    'records' (the measured arrays). Raises RunError when the fit does not converge; a fit
+    that does not explain the data is returned with explains_data False."""
+    if isinstance(records, (str, os.PathLike, Mapping)):
+        records = [records]
+    return _ridefit._fit_hysteresis(
+        [_record(r) for r in records], _model(model), list(free), list(per_file),
+        {k: (float(v[0]), float(v[1])) for k, v in (bounds or {}).items()},
+        {k: float(v) for k, v in (starts or {}).items()}, loss, float(loss_scale_N),
+        float(rtol), interpolation, int(max_iterations), [float(c) for c in compression_mm],
+        float(max_nrmse_percent))
+
+
+def fit_psd(measurement: PathLike, model: ModelLike, free: Iterable[str],
+            excitation: Optional[PathLike] = None, band_Hz: Tuple[float, float] = (0.5, 30.0),
+            segment_s: float = 10.0, starts: int = 1, max_iterations: int = 50,
+            loss: str = "none", rtol: float = 1e-4, body_noise_psd: Optional[float] = None,
+            wheel_noise_psd: Optional[float] = None,
+            max_nrmse_percent: float = 10.0) -> Dict[str, Any]:
+    """Fits quarter-car parameters to a measurement's acceleration spectra (CSV: time, road
+    unless `excitation`, body_acc and/or wheel_acc), as `ridefit fit psd --json` does.
+    Returns its JSON structure plus 'spectra' (frequency_Hz, measured and fitted PSDs)."""
+    return _ridefit._fit_psd(
+        os.fspath(measurement), _model(model), list(free),
+        os.fspath(excitation) if excitation is not None else "",
+        (float(band_Hz[0]), float(band_Hz[1])), float(segment_s), int(starts),
+        int(max_iterations), loss, float(rtol), body_noise_psd, wheel_noise_psd,
+        float(max_nrmse_percent))
+
+
+def diagnose(model: ModelLike, records: Union[PathLike, Sequence[PathLike]],
+             excitations: Sequence[PathLike] = (), effects: Union[str, Iterable[str]] = "all",
+             free: Iterable[str] = (), band_Hz: Tuple[float, float] = (0.5, 30.0),
+             segment_s: float = 4.0, screening_rtol: float = 1e-3, rtol: float = 1e-4,
+             body_noise_psd: Optional[float] = None, wheel_noise_psd: Optional[float] = None,
+             threads: int = 0) -> Dict[str, Any]:
+    """Finds the physical effect the model misses, as `ridefit diagnose --json` does: vehicle
+    measurements (one or two CSVs: time, road or excitations, body_acc/wheel_acc) or strut rig
+    records (time, displacement, force). effects: 'all' or a list of the library's ids.
+    Returns the CLI's JSON structure (ranked effects, scores, parameters, the gap before and
+    after) as a dict; no report folder is written."""
+    if isinstance(records, (str, os.PathLike)):
+        records = [records]
+    if isinstance(effects, str):
+        effects = [] if effects == "all" else effects.split(",")
+    return _ridefit._diagnose(
+        _model(model), [os.fspath(r) for r in records], [os.fspath(e) for e in excitations],
+        list(effects), list(free), (float(band_Hz[0]), float(band_Hz[1])), float(segment_s),
+        float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd, int(threads))
+
+
+def optimise(study: PathLike, output: Optional[PathLike] = None,
+             journal: Optional[PathLike] = None, threads: Optional[int] = None) -> Dict[str, Any]:
+    """Damper tuning with NLopt under friction from a study file (YAML), as
+    `ridefit optimise STUDY --json` runs it. Returns the result tree (status, variables,
+    objective, constraint margins, load cases, friction, the cost of ignoring it, the
+    trade-off) as a dict; an infeasible optimum is reported in it, not raised.
+
+    output: a result YAML to write (NAME_model.yaml and NAME_tradeoff.csv go beside it);
+    journal: a journal file of the evaluations (started afresh); threads: for the load cases
+    (0 = every core; default: the study's). Without output and journal nothing is written."""
+    return _ridefit._optimise(os.fspath(study), os.fspath(output) if output else "",
+                              os.fspath(journal) if journal else "", threads)
