@@ -4,9 +4,9 @@
     PYTHONPATH=build/python python3 examples/python/fit_loop.py \
         datasets/vehicles/passat_b8_front.yaml datasets/lab/triangle_3mm_1mmps.csv [loop.png]
 
-Loads the shipped rig record (a slow 3 mm triangle at 1 mm/s), fits σ0, Fc and the Dahl
-exponent from the model file's start values (`ridefit fit hysteresis` with --interpolation
-linear), prints the parameters with their standard errors, and draws measured and fitted force
+Loads the shipped rig record (a slow 3 mm triangle at 1 mm/s), fits σ0, Fc, the Dahl exponent
+and the load cell's offset from the model file's start values (as `ridefit fit hysteresis
+--interpolation linear`), prints the parameters with their standard errors, and draws measured and fitted force
 over displacement with matplotlib when it is installed. Exit code 1 when the fit does not
 explain the data or a value is not finite.
 """
@@ -19,9 +19,9 @@ import ridefit
 
 def main(model_file: str, record_file: str, figure_file: str = "fit_loop.png") -> int:
     record = ridefit.load_hysteresis_record(record_file)
-    fit = ridefit.fit_hysteresis(
-        record, model_file, free=["dahl_sigma0_N_per_m", "coulomb_force_N", "dahl_exponent"],
-        interpolation="linear")  # a triangle is piecewise linear between samples
+    free = ["dahl_sigma0_N_per_m", "coulomb_force_N", "dahl_exponent", "force_offset_N"]
+    # A triangle is piecewise linear between samples.
+    fit = ridefit.fit_hysteresis(record, model_file, free=free, interpolation="linear")
     for p in fit["parameters"]:
         error = p["standard_error"]  # None when the data cannot determine it
         print(f"{p['name']:<24} {p['value']:12.6g} ± {'-' if error is None else f'{error:.3g}'}")

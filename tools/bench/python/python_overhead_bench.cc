@@ -6,12 +6,15 @@
 //   BM_SimulateQuarterCarPython  ridefit.simulate(model, road) through an embedded interpreter:
 //                                the same run plus the argument checks, the JSON summary as a
 //                                dict and the channels as NumPy arrays.
-// Model and road are read once, outside the timed loops, on both sides. Run with
+// Model and road are read once, outside the timed loops, on both sides. The Python benchmark
+// also reports its overhead per call directly (overhead_ms, overhead_pct: the call's time less
+// the library call's inside it). Run with
 //   build/tools/python_overhead_bench --benchmark_repetitions=5
 // and compare the medians: (Python − C++) / C++ is the overhead.
 #include <benchmark/benchmark.h>
 #include <pybind11/embed.h>
 
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -48,11 +51,21 @@ void BM_SimulateQuarterCarPython(benchmark::State& state) {
   const py::object road = ridefit.attr("load_excitation")(kRoad);
   const py::object simulate = ridefit.attr("simulate");
   std::size_t samples = 0;
+  // The call's own time against the library call's inside it (the summary's wall_time_s): the
+  // overhead of one call, unaffected by how the machine's load drifts between the benchmarks.
+  double call_s = 0.0;
+  double library_s = 0.0;
   for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
     const py::object result = simulate(model, road);
+    call_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    library_s += result.attr("summary")["wall_time_s"].cast<double>();
     samples = py::len(result["body_acc"]);
   }
   state.counters["samples"] = static_cast<double>(samples);
+  const double n = static_cast<double>(state.iterations());
+  state.counters["overhead_ms"] = 1e3 * (call_s - library_s) / n;
+  state.counters["overhead_pct"] = 100.0 * (call_s - library_s) / library_s;
 }
 BENCHMARK(BM_SimulateQuarterCarPython)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
