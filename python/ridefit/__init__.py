@@ -45,7 +45,8 @@ RoadLike = Union[Road, PathLike, Mapping[str, Any]]
 
 __all__ = [
     "InputError", "RunError", "Model", "Road", "SimulationResult", "load_model",
-    "model_from_dict", "modes", "load_excitation", "road_from_dict", "measured_road", "simulate",
+    "model_from_dict", "modes", "load_excitation", "road_from_dict", "measured_road",
+    "profile_road", "simulate",
     "welch_psd", "weighting_magnitude", "apply_weighting", "minimum_sample_rate_Hz",
     "vibration_metrics", "running_rms", "load_hysteresis_record", "fit_hysteresis", "fit_psd",
     "diagnose", "optimise",
@@ -122,6 +123,18 @@ def simulate(model: ModelLike, road: RoadLike, output_rate_Hz: float = 1000.0,
     result.statistics = summary["solver"]
     result.notes = notes
     return result
+
+
+def profile_road(distance_m, elevation_m, speed_m_per_s: Optional[float] = None,
+                 speed_km_per_h: Optional[float] = None, offset_m: float = 0.0) -> Road:
+    """A road profile h(x) (arrays in m, strictly increasing distances, at least 5 points)
+    driven at a speed (give exactly one of speed_m_per_s and speed_km_per_h), as an
+    excitation of `type: profile` drives its CSV; offset_m: where the tyre is at t = 0
+    relative to the first point."""
+    if (speed_m_per_s is None) == (speed_km_per_h is None):
+        raise InputError("profile_road: give exactly one of speed_m_per_s and speed_km_per_h")
+    speed = speed_m_per_s if speed_m_per_s is not None else speed_km_per_h / 3.6
+    return _ridefit._profile_road(distance_m, elevation_m, float(speed), float(offset_m))
 
 
 def _record(record: Union[PathLike, Mapping[str, Any]]):

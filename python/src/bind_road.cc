@@ -2,6 +2,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <fmt/core.h>
+
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -13,6 +16,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
+#include "ridefit/road/profile_road.h"
 #include "road_handle.h"
 
 namespace ridefit::python {
@@ -55,6 +59,21 @@ RoadHandle road_from_arrays(const InputArray& time_s, const InputArray& elevatio
   return {std::make_shared<road::MeasuredRoad>(time, elevation), "<arrays>"};
 }
 
+// A spatial profile h(x) driven at a speed, as `type: profile` drives a CSV.
+RoadHandle road_from_profile(const InputArray& distance_m, const InputArray& elevation_m,
+                             double speed_m_per_s, double offset_m) {
+  if (!(speed_m_per_s > 0.0) || !std::isfinite(speed_m_per_s)) {
+    throw InputError(fmt::format("speed_m_per_s: {} is not a finite speed > 0", speed_m_per_s));
+  }
+  if (!std::isfinite(offset_m)) throw InputError("offset_m: not a finite distance");
+  road::ProfileRoadParameters parameters;
+  parameters.speed_m_per_s = speed_m_per_s;
+  parameters.offset_m = offset_m;
+  return {std::make_shared<road::SpatialProfileRoad>(road::make_profile_road(
+              as_span(distance_m, "distance_m"), as_span(elevation_m, "elevation_m"), parameters)),
+          "<arrays>"};
+}
+
 }  // namespace
 
 void bind_road(py::module_& m) {
@@ -93,6 +112,8 @@ profile, measured, opencrg), exactly as `ridefit simulate MODEL EXCITATION` read
   m.def("road_from_dict", &road_from_dict, py::arg("mapping"), py::arg("name") = "<dict>",
         R"(A road from a dict with the keys of an excitation file, checked by the same rules;
 e.g. {'type': 'iso8608', 'class': 'B', 'speed_km_per_h': 50, 'duration_s': 20}.)");
+  m.def("_profile_road", &road_from_profile, py::arg("distance_m"), py::arg("elevation_m"),
+        py::arg("speed_m_per_s"), py::arg("offset_m"), "ridefit.profile_road without defaults");
   m.def("measured_road", &road_from_arrays, py::arg("time_s"), py::arg("elevation_m"),
         py::arg("command") = py::none(), py::arg("command_unit") = "",
         R"(A road elevation recorded over time (arrays in s and m), as `type: measured` reads a

@@ -76,3 +76,18 @@ def test_weighting_magnitudes_match_iso_2631_table_3():
         ridefit.weighting_magnitude("Wz", np.array([1.0]))
     with pytest.raises(ridefit.InputError):
         ridefit.apply_weighting("Wk", np.ones(1000), 100.0)
+
+
+def test_any_float_sequence_is_accepted_and_gives_the_same_spectrum():
+    rng = np.random.default_rng(7)
+    signal = rng.standard_normal(4000)
+    reference = ridefit.welch_psd(signal, 100.0, segment_s=4.0)["psd"]
+    strided = np.repeat(signal, 2)[::2]  # a non-contiguous view
+    assert not strided.flags["C_CONTIGUOUS"]
+    for same in (strided, list(signal)):
+        np.testing.assert_array_equal(ridefit.welch_psd(same, 100.0, segment_s=4.0)["psd"],
+                                      reference)
+    counts = np.round(1000 * signal).astype(np.int64)  # converted to float64 on the way in
+    np.testing.assert_array_equal(ridefit.welch_psd(counts, 100.0, segment_s=4.0)["psd"],
+                                  ridefit.welch_psd(counts.astype(np.float64), 100.0,
+                                                    segment_s=4.0)["psd"])

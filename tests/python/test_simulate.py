@@ -140,3 +140,16 @@ def test_bad_arguments_are_input_errors(passat):
         ridefit.simulate(passat, ROAD, output_rate_Hz=1e9)
     with pytest.raises(ridefit.InputError, match="rear_delay_s"):
         ridefit.simulate(passat, ROAD, rear_delay_s=0.1)
+
+
+def test_a_profile_road_from_arrays_equals_the_profile_excitation(tmp_path, passat):
+    excitation = dataset("excitations/profile_example.yaml")
+    out = tmp_path / "run.csv"
+    run_cli("simulate", passat, excitation, "-o", out)
+    profile = read_csv(dataset("excitations/profile_example.csv"))  # elevation in mm
+    road = ridefit.profile_road(profile["distance"], 1e-3 * profile["elevation"],
+                                speed_km_per_h=30)
+    assert road.speed_m_per_s == pytest.approx(30 / 3.6)
+    assert_channels_equal_csv(ridefit.simulate(passat, road), read_csv(out))
+    with pytest.raises(ridefit.InputError, match="exactly one"):
+        ridefit.profile_road(profile["distance"], profile["elevation"])
