@@ -70,3 +70,18 @@ def test_docstrings_show_in_help():
                      ridefit.fit_hysteresis, ridefit.fit_psd, ridefit.diagnose, ridefit.optimise,
                      ridefit.vibration_metrics, ridefit.apply_weighting):
         assert function.__doc__ and len(function.__doc__) > 80, function
+
+
+def test_the_type_stubs_cover_the_extension():
+    import ast
+    import pathlib
+
+    import ridefit._ridefit as extension
+
+    stubs = pathlib.Path(ridefit.__file__).with_name("_ridefit.pyi")
+    tree = ast.parse(stubs.read_text())
+    stubbed = {node.name for node in tree.body
+               if isinstance(node, (ast.FunctionDef, ast.ClassDef))}
+    public = {name for name in dir(extension) if not name.startswith("__")}
+    assert public - stubbed == set()
+    assert stubs.with_name("py.typed").exists()
