@@ -28,6 +28,14 @@ def test_diagnose_equals_the_cli(tmp_path, record, passat):
     assert result["verdict"] == "no missing effect found"
 
 
+def test_diagnose_of_rig_loops_equals_the_cli(tmp_path, passat):
+    rig = dataset("hidden/rig_baseline_only.csv")
+    cli = run_cli("diagnose", passat, rig, "--effects", "gas_force", "--threads", 1, "--json",
+                  "-q", "-o", tmp_path / "loops").json()
+    result = ridefit.diagnose(passat, rig, effects="gas_force", threads=1)
+    assert_same_numbers(result, cli, rtol=1e-6, skip=RUN_KEYS)
+
+
 def test_diagnose_refuses_what_the_cli_refuses(tmp_path, record, passat):
     message = run_cli("diagnose", passat, record, "--effects", "gas_spring", "-o",
                       tmp_path / "d", expect=2).error_message()
