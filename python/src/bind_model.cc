@@ -10,6 +10,7 @@
 #include "json_to_python.h"
 #include "model_handle.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/simulate/quarter_car_modes.h"
 
 namespace ridefit::python {
@@ -57,6 +58,25 @@ void bind_model(py::module_& m) {
       .def_property_readonly("kind", &ModelHandle::kind, "'quarter_car' or 'half_car'")
       .def_property_readonly("name", &ModelHandle::name,
                              "The file the model came from, or the dict's name")
+      .def_property_readonly(
+          "damper_state",
+          [](const ModelHandle& model) {
+            return std::string(model::to_string(model.quarter_car("damper_state").damper_state));
+          },
+          "The quarter car's topology: 'slip', 'stick' or 'stick_slip'")
+      .def_property_readonly(
+          "parameters",
+          [](const ModelHandle& model) {
+            const auto& p = model.quarter_car("parameters").parameters;
+            py::dict values;
+            for (std::size_t i = 0; i < model::kQuarterCarParameters.size(); ++i) {
+              values[py::str(model::kQuarterCarParameters[i].key_string())] =
+                  model::quarter_car_parameter(p, i);
+            }
+            return values;
+          },
+          "The quarter car's parameters by model-file key, in SI units (every row of the "
+          "parameter table; an optional effect that is off holds its neutral value)")
       .def("__repr__", [](const ModelHandle& model) {
         return "<ridefit.Model " + model.kind() + " from " + model.name() + ">";
       });

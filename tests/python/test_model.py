@@ -85,3 +85,14 @@ def test_the_type_stubs_cover_the_extension():
     public = {name for name in dir(extension) if not name.startswith("__")}
     assert public - stubbed == set()
     assert stubs.with_name("py.typed").exists()
+
+
+def test_parameters_are_the_file_values_with_the_overrides(passat):
+    model = ridefit.load_model(passat, overrides={"coulomb_force_N": 30}, damper_state="slip")
+    assert model.damper_state == "slip"
+    expected = read_flat_yaml(passat)
+    for key in ("model", "damper_state"):
+        del expected[key]
+    expected["coulomb_force_N"] = 30
+    for key, value in expected.items():
+        assert model.parameters[key] == float(value), key
