@@ -14,7 +14,9 @@ RuntimeError), each with the message the command line prints. Long calls release
 
 from __future__ import annotations
 
+import contextlib
 import os
+import tempfile
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 from ._ridefit import (  # noqa: F401  (re-exported)
@@ -137,6 +139,44 @@ def profile_road(distance_m, elevation_m, speed_m_per_s: Optional[float] = None,
     return _ridefit._profile_road(distance_m, elevation_m, float(speed), float(offset_m))
 
 
+# The SI unit of each channel a recording may hold (design.md's names), for arrays written to a
+# CSV on their way to a library reader.
+_CHANNEL_UNITS = {"time": "s", "road": "m", "body_acc": "m/s^2", "wheel_acc": "m/s^2",
+                  "seat_acc": "m/s^2", "displacement": "m", "force": "N", "current": "A",
+                  "voltage": "V", "travel": "m", "tyre_force": "N", "damper_force": "N",
+                  "friction_force": "N"}
+
+
+def _write_recording(mapping: Mapping[str, Any], path: str) -> None:
+    import numpy as np
+
+    units = dict(_CHANNEL_UNITS, **getattr(mapping, "units", {}))
+    names = [name for name in mapping if name in units]
+    if "time" not in names:
+        raise InputError("a recording given as arrays needs a 'time' array [s]")
+    columns = np.column_stack([np.asarray(mapping[name], dtype=np.float64) for name in names])
+    header = ",".join(f"{name}[{units[name]}]" for name in names)
+    # %.17g: the doubles read back bit for bit.
+    np.savetxt(path, columns, delimiter=",", header=header, comments="", fmt="%.17g")
+
+
+@contextlib.contextmanager
+def _recording_files(records: Sequence[Any]):
+    """CSV paths for records given as paths or as dicts of arrays under channel names (a
+    SimulationResult too); the latter are written to temporary CSVs (the readers' checks apply
+    to them as to files) that are removed afterwards."""
+    with tempfile.TemporaryDirectory(prefix="ridefit-") as directory:
+        paths = []
+        for i, record in enumerate(records):
+            if isinstance(record, Mapping):
+                path = os.path.join(directory, f"record{i}.csv")
+                _write_recording(record, path)
+                paths.append(path)
+            else:
+                paths.append(os.fspath(record))
+        yield paths
+
+
 def _record(record: Union[PathLike, Mapping[str, Any]]):
     if isinstance(record, Mapping):
         return dict(record)
@@ -172,24 +212,27 @@ def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], m
         float(max_nrmse_percent))
 
 
-def fit_psd(measurement: PathLike, model: ModelLike, free: Iterable[str],
-            excitation: Optional[PathLike] = None, band_Hz: Tuple[float, float] = (0.5, 30.0),
-            segment_s: float = 10.0, starts: int = 1, max_iterations: int = 50,
-            loss: str = "none", rtol: float = 1e-4, body_noise_psd: Optional[float] = None,
-            wheel_noise_psd: Optional[float] = None,
+def fit_psd(measurement: Union[PathLike, Mapping[str, Any]], model: ModelLike,
+            free: Iterable[str], excitation: Optional[PathLike] = None,
+            band_Hz: Tuple[float, float] = (0.5, 30.0), segment_s: float = 10.0,
+            starts: int = 1, max_iterations: int = 50, loss: str = "none", rtol: float = 1e-4,
+            body_noise_psd: Optional[float] = None, wheel_noise_psd: Optional[float] = None,
             max_nrmse_percent: float = 10.0) -> Dict[str, Any]:
-    """Fits quarter-car parameters to a measurement's acceleration spectra (CSV: time, road
-    unless `excitation`, body_acc and/or wheel_acc), as `ridefit fit psd --json` does.
-    Returns its JSON structure plus 'spectra' (frequency_Hz, measured and fitted PSDs)."""
-    return _ridefit._fit_psd(
-        os.fspath(measurement), _model(model), list(free),
-        os.fspath(excitation) if excitation is not None else "",
-        (float(band_Hz[0]), float(band_Hz[1])), float(segment_s), int(starts),
-        int(max_iterations), loss, float(rtol), body_noise_psd, wheel_noise_psd,
-        float(max_nrmse_percent))
+    """Fits quarter-car parameters to a measurement's acceleration spectra, as
+    `ridefit fit psd --json` does. measurement: a CSV (time, road unless `excitation`,
+    body_acc and/or wheel_acc, optionally current or voltage) or the same as a dict of arrays
+    in SI units (a SimulationResult too). Returns the CLI's JSON structure plus 'spectra'
+    (frequency_Hz, measured and fitted PSDs)."""
+    with _recording_files([measurement]) as (path,):
+        return _ridefit._fit_psd(
+            path, _model(model), list(free),
+            os.fspath(excitation) if excitation is not None else "",
+            (float(band_Hz[0]), float(band_Hz[1])), float(segment_s), int(starts),
+            int(max_iterations), loss, float(rtol), body_noise_psd, wheel_noise_psd,
+            float(max_nrmse_percent))
 
 
-def diagnose(model: ModelLike, records: Union[PathLike, Sequence[PathLike]],
+def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Sequence[Any]],
              excitations: Sequence[PathLike] = (), effects: Union[str, Iterable[str]] = "all",
              free: Iterable[str] = (), band_Hz: Tuple[float, float] = (0.5, 30.0),
              segment_s: float = 4.0, screening_rtol: float = 1e-3, rtol: float = 1e-4,
@@ -197,17 +240,19 @@ def diagnose(model: ModelLike, records: Union[PathLike, Sequence[PathLike]],
              threads: int = 0) -> Dict[str, Any]:
     """Finds the physical effect the model misses, as `ridefit diagnose --json` does: vehicle
     measurements (one or two CSVs: time, road or excitations, body_acc/wheel_acc) or strut rig
-    records (time, displacement, force). effects: 'all' or a list of the library's ids.
+    records (time, displacement, force); a record may also be a dict of arrays under those
+    channel names in SI units (a SimulationResult too). effects: 'all' or a list of the library's ids.
     Returns the CLI's JSON structure (ranked effects, scores, parameters, the gap before and
     after) as a dict; no report folder is written."""
-    if isinstance(records, (str, os.PathLike)):
+    if isinstance(records, (str, os.PathLike, Mapping)):
         records = [records]
     if isinstance(effects, str):
         effects = [] if effects == "all" else effects.split(",")
-    return _ridefit._diagnose(
-        _model(model), [os.fspath(r) for r in records], [os.fspath(e) for e in excitations],
-        list(effects), list(free), (float(band_Hz[0]), float(band_Hz[1])), float(segment_s),
-        float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd, int(threads))
+    with _recording_files(records) as paths:
+        return _ridefit._diagnose(
+            _model(model), paths, [os.fspath(e) for e in excitations], list(effects),
+            list(free), (float(band_Hz[0]), float(band_Hz[1])), float(segment_s),
+            float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd, int(threads))
 
 
 def optimise(study: PathLike, output: Optional[PathLike] = None,

@@ -3,7 +3,7 @@
 import pytest
 
 import ridefit
-from conftest import assert_same_numbers, dataset, run_cli
+from conftest import assert_same_numbers, dataset, read_csv, run_cli
 
 # Wall times, file names and paths of what the CLI wrote.
 RUN_KEYS = ("wall_time_s", "report", "model", "files", "journal", "result", "written")
@@ -34,6 +34,14 @@ def test_diagnose_of_rig_loops_equals_the_cli(tmp_path, passat):
                   "-q", "-o", tmp_path / "loops").json()
     result = ridefit.diagnose(passat, rig, effects="gas_force", threads=1)
     assert_same_numbers(result, cli, rtol=1e-6, skip=RUN_KEYS)
+    # The same record as arrays (displacement converted from the file's mm).
+    columns = read_csv(rig)
+    arrays = {"time": columns["time"], "displacement": 1e-3 * columns["displacement"],
+              "force": columns["force"]}
+    from_arrays = ridefit.diagnose(passat, arrays, effects="gas_force", threads=1)
+    assert from_arrays["verdict"] == result["verdict"]
+    assert from_arrays["gap_after_nrmse_percent"] == pytest.approx(
+        result["gap_after_nrmse_percent"], rel=1e-6)
 
 
 def test_diagnose_refuses_what_the_cli_refuses(tmp_path, record, passat):

@@ -69,3 +69,14 @@ def test_fit_psd_equals_the_cli(passat):
     assert_same_numbers(fit, cli.json(), rtol=1e-6)
     spectra = fit["spectra"]
     assert spectra["frequency_Hz"].shape == spectra["measured_body_psd"].shape
+
+
+def test_fit_psd_of_arrays_equals_the_cli_on_their_file(passat):
+    measurement = dataset("hidden/damper_friction.csv")  # every column in SI units
+    cli = run_cli("fit", "psd", measurement, "--model", passat, "--free", "coulomb_force_N",
+                  "--json", expect=None)
+    arrays = read_csv(measurement)
+    fit = ridefit.fit_psd(arrays, passat, free=["coulomb_force_N"])
+    assert_same_numbers(fit, cli.json(), rtol=1e-6)
+    with pytest.raises(ridefit.InputError, match="time"):
+        ridefit.fit_psd({"body_acc": arrays["body_acc"]}, passat, free=["coulomb_force_N"])
