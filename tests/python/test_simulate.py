@@ -153,3 +153,17 @@ def test_a_profile_road_from_arrays_equals_the_profile_excitation(tmp_path, pass
     assert_channels_equal_csv(ridefit.simulate(passat, road), read_csv(out))
     with pytest.raises(ridefit.InputError, match="exactly one"):
         ridefit.profile_road(profile["distance"], profile["elevation"])
+
+
+def test_simulations_in_threads_equal_one_after_the_other(passat):
+    from concurrent.futures import ThreadPoolExecutor
+
+    model = ridefit.load_model(passat)
+    roads = [ridefit.road_from_dict(dict(read_flat_yaml(ROAD), seed=seed)) for seed in (1, 2, 3)]
+    alone = [ridefit.simulate(model, road, duration_s=3)["body_acc"] for road in roads]
+    with ThreadPoolExecutor(max_workers=3) as pool:
+        together = list(pool.map(lambda road: ridefit.simulate(model, road, duration_s=3),
+                                 roads))
+    for a, b in zip(alone, together):
+        np.testing.assert_array_equal(a, b["body_acc"])
+    assert not np.array_equal(alone[0], alone[1])  # the seeds give different roads
