@@ -17,7 +17,7 @@ from __future__ import annotations
 import contextlib
 import os
 import tempfile
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 from ._ridefit import (  # noqa: F401  (re-exported)
     InputError,
@@ -237,13 +237,15 @@ def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Seque
              free: Iterable[str] = (), band_Hz: Tuple[float, float] = (0.5, 30.0),
              segment_s: float = 4.0, screening_rtol: float = 1e-3, rtol: float = 1e-4,
              body_noise_psd: Optional[float] = None, wheel_noise_psd: Optional[float] = None,
-             threads: int = 0) -> Dict[str, Any]:
+             threads: int = 0, progress: Optional[Callable[[str], None]] = None
+             ) -> Dict[str, Any]:
     """Finds the physical effect the model misses, as `ridefit diagnose --json` does: vehicle
     measurements (one or two CSVs: time, road or excitations, body_acc/wheel_acc) or strut rig
     records (time, displacement, force); a record may also be a dict of arrays under those
     channel names in SI units (a SimulationResult too). effects: 'all' or a list of the library's ids.
     Returns the CLI's JSON structure (ranked effects, scores, parameters, the gap before and
-    after) as a dict; no report folder is written."""
+    after) as a dict; no report folder is written. progress: called with each line the CLI
+    prints on stderr (from the diagnosis's threads, with the GIL taken)."""
     if isinstance(records, (str, os.PathLike, Mapping)):
         records = [records]
     if isinstance(effects, str):
@@ -252,11 +254,13 @@ def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Seque
         return _ridefit._diagnose(
             _model(model), paths, [os.fspath(e) for e in excitations], list(effects),
             list(free), (float(band_Hz[0]), float(band_Hz[1])), float(segment_s),
-            float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd, int(threads))
+            float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd, int(threads),
+            progress)
 
 
 def optimise(study: PathLike, output: Optional[PathLike] = None,
-             journal: Optional[PathLike] = None, threads: Optional[int] = None) -> Dict[str, Any]:
+             journal: Optional[PathLike] = None, threads: Optional[int] = None,
+             progress: Optional[Callable[[str], None]] = None) -> Dict[str, Any]:
     """Damper tuning with NLopt under friction from a study file (YAML), as
     `ridefit optimise STUDY --json` runs it. Returns the result tree (status, variables,
     objective, constraint margins, load cases, friction, the cost of ignoring it, the
@@ -264,6 +268,7 @@ def optimise(study: PathLike, output: Optional[PathLike] = None,
 
     output: a result YAML to write (NAME_model.yaml and NAME_tradeoff.csv go beside it);
     journal: a journal file of the evaluations (started afresh); threads: for the load cases
-    (0 = every core; default: the study's). Without output and journal nothing is written."""
+    (0 = every core; default: the study's); progress: called with each line the CLI prints on
+    stderr. Without output and journal nothing is written."""
     return _ridefit._optimise(os.fspath(study), os.fspath(output) if output else "",
-                              os.fspath(journal) if journal else "", threads)
+                              os.fspath(journal) if journal else "", threads, progress)

@@ -1,6 +1,6 @@
 # Type stubs of the C++ extension (python/src/); the package's own functions are annotated in
 # __init__.py. Arrays are float64 NumPy arrays; anything array-like is converted on the way in.
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Callable, Dict, List, Optional, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -67,6 +67,8 @@ def _fit_psd(measurement: str, model: Model, free: List[str], excitation: str,
 def _diagnose(model: Model, records: List[str], excitations: List[str], effects: List[str],
               free: List[str], band_Hz: Tuple[float, float], segment_s: float,
               screening_rtol: float, rtol: float, body_noise_psd: Optional[float],
-              wheel_noise_psd: Optional[float], threads: int) -> Dict[str, Any]: ...
+              wheel_noise_psd: Optional[float], threads: int,
+              progress: Optional[Callable[[str], None]]) -> Dict[str, Any]: ...
 def _optimise(study: str, output: str = ..., journal: str = ...,
-              threads: Optional[int] = ...) -> Dict[str, Any]: ...
+              threads: Optional[int] = ...,
+              progress: Optional[Callable[[str], None]] = ...) -> Dict[str, Any]: ...

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "bindings.h"
 #include "json_to_python.h"
 #include "model_handle.h"
+#include "progress_callback.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/diagnosis.h"
 #include "ridefit/fitting/diagnose/diagnosis_records.h"
@@ -45,6 +47,7 @@ struct DiagnoseArguments {
   std::optional<double> body_noise_psd;
   std::optional<double> wheel_noise_psd;
   unsigned threads;
+  std::function<void(const std::string&)> progress;
 };
 
 void check_effects(const std::vector<std::string>& ids) {
@@ -92,7 +95,7 @@ nlohmann::json diagnose_loops(const ModelHandle& model, const DiagnoseArguments&
   baseline.kind = dx::DataKind::kStrutLoops;
   baseline.strut = fitting::strut_on_rig(file.make_model());
   py::gil_scoped_release unlocked;
-  return dx::loop_summary_json(dx::diagnose_loops(baseline, data, options));
+  return dx::loop_summary_json(dx::diagnose_loops(baseline, data, options, a.progress));
 }
 
 nlohmann::json diagnose_spectra(const ModelHandle& model, const DiagnoseArguments& a) {
@@ -146,7 +149,7 @@ nlohmann::json diagnose_spectra(const ModelHandle& model, const DiagnoseArgument
   }
   for (const auto* m : {&data.training, &data.held_out}) fitting::noise_floors(*m, options.fit);
   py::gil_scoped_release unlocked;
-  return dx::spectra_summary_json(dx::diagnose({file.make_model()}, data, options));
+  return dx::spectra_summary_json(dx::diagnose({file.make_model()}, data, options, a.progress));
 }
 
 }  // namespace
@@ -158,7 +161,7 @@ void bind_diagnose(py::module_& m) {
          std::vector<std::string> excitations, std::vector<std::string> effects,
          std::vector<std::string> free, std::pair<double, double> band_Hz, double segment_s,
          double screening_rtol, double rtol, std::optional<double> body_noise_psd,
-         std::optional<double> wheel_noise_psd, unsigned threads) {
+         std::optional<double> wheel_noise_psd, unsigned threads, const py::object& progress) {
         check_effects(effects);
         const DiagnoseArguments a{std::move(records),
                                   std::move(excitations),
@@ -170,7 +173,8 @@ void bind_diagnose(py::module_& m) {
                                   rtol,
                                   body_noise_psd,
                                   wheel_noise_psd,
-                                  threads};
+                                  threads,
+                                  progress_callback(progress)};
         if (a.records.empty()) throw InputError("records: give one or two records");
         std::size_t rig = 0;
         for (const auto& file : a.records) rig += fitting::is_rig_record(file) ? 1 : 0;

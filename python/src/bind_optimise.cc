@@ -10,6 +10,7 @@
 
 #include "bindings.h"
 #include "json_to_python.h"
+#include "progress_callback.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/optimisation/evaluation_journal.h"
@@ -29,7 +30,8 @@ namespace {
 // Without `journal` nothing is journalled; without `output` no file is written (the CLI always
 // journals and writes where -o says).
 py::object optimise(const std::string& study_file, const std::string& output,
-                    const std::string& journal_file, std::optional<int> threads) {
+                    const std::string& journal_file, std::optional<int> threads,
+                    const py::object& progress) {
   opt::TuningStudy study = opt::load_tuning_study(study_file);
   if (threads) {
     if (*threads < 0 || *threads > 256) {
@@ -55,7 +57,14 @@ py::object optimise(const std::string& study_file, const std::string& output,
   nlohmann::json result;
   {
     py::gil_scoped_release unlocked;
-    const opt::TuningOutcome outcome = opt::run_tuning_study(problem);
+    const auto line_of = progress_callback(progress);
+    opt::StageProgress stage_progress;
+    if (line_of) {
+      stage_progress = [&line_of](const std::string& stage, const std::string& line) {
+        line_of(stage.empty() ? line : "(" + stage + ") " + line);
+      };
+    }
+    const opt::TuningOutcome outcome = opt::run_tuning_study(problem, stage_progress);
     const double wall_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     // Only the files this call writes are named in the result.
@@ -77,7 +86,7 @@ py::object optimise(const std::string& study_file, const std::string& output,
 
 void bind_optimise(py::module_& m) {
   m.def("_optimise", &optimise, py::arg("study"), py::arg("output") = "", py::arg("journal") = "",
-        py::arg("threads") = py::none(),
+        py::arg("threads") = py::none(), py::arg("progress") = py::none(),
         R"(Damper tuning with NLopt under friction from a study file (YAML), as `ridefit optimise
 STUDY --json` runs it. Returns the result tree (status, variables, objective, constraint margins,
 load cases, friction, the cost of ignoring it, the trade-off). output: a result YAML to write (with

@@ -22,9 +22,11 @@ def test_diagnose_equals_the_cli(tmp_path, record, passat):
     cli = run_cli("diagnose", passat, record, "--effects", "tyre_lift_off,bump_stop",
                   "--segment", 2, "--threads", 1, "--json", "-q", "-o",
                   tmp_path / "diagnosis").json()
+    lines = []
     result = ridefit.diagnose(passat, record, effects=["tyre_lift_off", "bump_stop"],
-                              segment_s=2, threads=1)
+                              segment_s=2, threads=2, progress=lines.append)
     assert_same_numbers(result, cli, rtol=1e-6, skip=RUN_KEYS)
+    assert lines and all(isinstance(line, str) for line in lines)
     assert result["verdict"] == "no missing effect found"
 
 
@@ -55,10 +57,21 @@ def test_diagnose_refuses_what_the_cli_refuses(tmp_path, record, passat):
 def test_optimise_equals_the_cli(tmp_path):
     study = dataset("studies/seed001_damper_tuning_linear.yaml")
     cli = run_cli("optimise", study, "--json", "-q", "--journal", tmp_path / "j.journal").json()
-    result = ridefit.optimise(study)
+    lines = []
+    result = ridefit.optimise(study, progress=lines.append)
     assert_same_numbers(result, cli, rtol=1e-9, skip=RUN_KEYS)
+    assert lines
     written = tmp_path / "result.yaml"
     ridefit.optimise(study, output=written, journal=tmp_path / "p.journal")
     assert written.exists()
     with pytest.raises(ridefit.InputError):
         ridefit.optimise(dataset("vehicles/passat_b8_front.yaml"))
+
+
+@pytest.mark.filterwarnings("ignore::pytest.PytestUnraisableExceptionWarning")
+def test_a_failing_progress_callback_does_not_end_the_run():
+    def fail(line):
+        raise KeyError(line)
+
+    study = dataset("studies/seed001_damper_tuning_linear.yaml")
+    assert ridefit.optimise(study, progress=fail)["status"] == ridefit.optimise(study)["status"]
