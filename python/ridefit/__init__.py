@@ -27,7 +27,6 @@ from ._ridefit import (  # noqa: F401  (re-exported)
     __version__,
     apply_weighting,
     load_excitation,
-    load_hysteresis_record,
     measured_road,
     minimum_sample_rate_Hz,
     model_from_dict,
@@ -37,6 +36,7 @@ from ._ridefit import (  # noqa: F401  (re-exported)
     weighting_magnitude,
     welch_psd,
 )
+from ._ridefit import load_hysteresis_record as _load_hysteresis_record
 from ._ridefit import load_model as _load_model
 from ._ridefit import modes as _modes
 from . import _ridefit
@@ -175,6 +175,13 @@ def _recording_files(records: Sequence[Any]):
             else:
                 paths.append(os.fspath(record))
         yield paths
+
+
+def load_hysteresis_record(path: PathLike) -> Dict[str, Any]:
+    """A strut rig record (CSV: time, displacement, force[, current|voltage]) in SI units:
+    {'source', 'time_s', 'displacement_m', 'force_N'[, 'command', 'command_unit']}, checked as
+    `ridefit fit hysteresis` checks it."""
+    return _load_hysteresis_record(os.fspath(path))
 
 
 def _record(record: Union[PathLike, Mapping[str, Any]]):

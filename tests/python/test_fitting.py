@@ -1,5 +1,7 @@
 """fit_hysteresis (from arrays and from files) and fit_psd against `ridefit fit ... --json`."""
 
+import pathlib
+
 import numpy as np
 import pytest
 
@@ -54,7 +56,7 @@ def test_fit_hysteresis_refuses_what_the_cli_refuses(passat):
 
 
 def test_load_hysteresis_record_converts_to_si():
-    record = ridefit.load_hysteresis_record(TRIANGLE)
+    record = ridefit.load_hysteresis_record(pathlib.Path(TRIANGLE))
     columns = read_csv(TRIANGLE)
     np.testing.assert_allclose(record["displacement_m"], 1e-3 * columns["displacement"])
     assert record["source"] == TRIANGLE
