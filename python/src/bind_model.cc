@@ -25,7 +25,7 @@ nlohmann::json modes_json(const ModelHandle& model, const std::string& state) {
   const std::vector<std::string> states =
       state.empty() ? std::vector<std::string>{"slip", "stick"} : std::vector<std::string>{state};
   if (!state.empty() && state != "slip" && state != "stick") {
-    throw InputError("--state: " + state + " not in {slip,stick}");
+    throw InputError("state: '" + state + "'; expected '' (both), 'slip' or 'stick'");
   }
   nlohmann::json summary = {{"model", model.name()}, {"states", nlohmann::json::object()}};
   for (const auto& s : states) {

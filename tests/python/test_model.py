@@ -96,3 +96,8 @@ def test_parameters_are_the_file_values_with_the_overrides(passat):
     expected["coulomb_force_N"] = 30
     for key, value in expected.items():
         assert model.parameters[key] == float(value), key
+
+
+def test_an_unknown_state_is_refused(passat):
+    with pytest.raises(ridefit.InputError, match="state: 'both'"):
+        ridefit.modes(passat, state="both")
