@@ -13,7 +13,8 @@ def test_the_installed_package_imports_and_runs(tmp_path):
     subprocess.run([cmake, "--install", os.environ["RIDEFIT_BINARY_DIR"], "--component",
                     "python", "--prefix", str(tmp_path)], check=True, capture_output=True)
     site = tmp_path / "lib" / "python3" / "dist-packages"
-    assert (site / "ridefit" / "__init__.py").exists()
+    for name in ("__init__.py", "_ridefit.pyi", "py.typed"):
+        assert (site / "ridefit" / name).exists(), name
     environment = dict(os.environ, PYTHONPATH=str(site))
     code = ("import ridefit, numpy; "
             "p = ridefit.welch_psd(numpy.sin(numpy.arange(4096) * 0.3), 100.0); "
