@@ -115,7 +115,12 @@ def simulate(model: ModelLike, road: RoadLike, output_rate_Hz: float = 1000.0,
     """Simulates a quarter or half car over a road from static equilibrium at rest, as
     `ridefit simulate MODEL EXCITATION` does (same defaults: 1000 Hz output, the road's
     duration, the esdirk integrator at rtol 1e-5; method 'cvode' or 'rk4' with step_s).
-    rear_delay_s: a half car on a road given over time. The GIL is released while it runs."""
+    rear_delay_s: a half car on a road given over time. model and road may also be paths or
+    dicts. The GIL is released while it runs.
+
+    Returns a SimulationResult: {channel: float64 array} under the CSV's names (time, road,
+    body_acc, wheel_acc, travel, ...), with .units, .statistics (the solver's), .summary (the
+    `--json` structure) and .structured() (one NumPy structured array)."""
     channels, units, summary, notes = _ridefit._simulate(
         _model(model), _road(road), float(output_rate_Hz), float(duration_s), method,
         float(rtol), float(step_s), rear_delay_s)
