@@ -50,7 +50,7 @@ __all__ = [
     "model_from_dict", "modes", "load_excitation", "road_from_dict", "measured_road",
     "profile_road", "simulate",
     "welch_psd", "weighting_magnitude", "apply_weighting", "minimum_sample_rate_Hz",
-    "vibration_metrics", "running_rms", "load_hysteresis_record", "fit_hysteresis", "fit_psd",
+    "vibration_metrics", "running_rms", "analyse", "load_hysteresis_record", "fit_hysteresis", "fit_psd",
     "diagnose", "optimise",
 ]
 
@@ -180,6 +180,35 @@ def _recording_files(records: Sequence[Any]):
             else:
                 paths.append(os.fspath(record))
         yield paths
+
+
+def analyse(recordings: Union[PathLike, Mapping[str, Any], Sequence[Any]],
+            channels: Iterable[str] = (), weighting: str = "auto",
+            band_Hz: Tuple[float, float] = (0.5, 30.0), segment_s: float = 0.0,
+            overlap: float = 0.5, detrend: str = "mean", smooth_bins: int = 1,
+            confidence: float = 0.9, static_tyre_load_N: Optional[float] = None,
+            model: Optional[ModelLike] = None,
+            rattle_space_m: Optional[Tuple[float, float]] = None, impact: bool = False,
+            levels: Sequence[float] = (), level_name: str = "level") -> Dict[str, Any]:
+    """The numbers a ride engineer reports for recordings, as `ridefit analyse --json`:
+    per recording every channel's RMS, peak, band RMS and, by channel name or `weighting`
+    ('auto', 'none', 'Wk', ...), the ISO 2631-1 weighted RMS, MTVV, VDV, crest factor and
+    comfort reactions; tyre load (static_tyre_load_N or a quarter-car model), travel
+    (rattle_space_m) and impact figures; the averaged spectra with their confidence band; and
+    with levels (one per recording) the correlation of every metric with them.
+
+    recordings: CSVs (time[s] and name[unit] columns) or dicts of arrays under channel names in
+    SI units (a SimulationResult too). Returns the CLI's JSON structure plus 'spectra':
+    {channel: {'unit', 'frequency_Hz', 'psd', 'lower', 'upper'}}."""
+    if isinstance(recordings, (str, os.PathLike, Mapping)):
+        recordings = [recordings]
+    with _recording_files(recordings) as paths:
+        return _ridefit._analyse(
+            paths, list(channels), weighting, (float(band_Hz[0]), float(band_Hz[1])),
+            float(segment_s), float(overlap), detrend, int(smooth_bins), float(confidence),
+            static_tyre_load_N, _model(model) if model is not None else None,
+            (float(rattle_space_m[0]), float(rattle_space_m[1])) if rattle_space_m else None,
+            bool(impact), [float(v) for v in levels], level_name)
 
 
 def load_hysteresis_record(path: PathLike) -> Dict[str, Any]:

@@ -12,6 +12,7 @@ void bind_road(pybind11::module_& m);      // Road, load_excitation, road_from_d
 void bind_simulate(pybind11::module_& m);  // simulate
 void bind_signal(pybind11::module_& m);    // welch_psd
 void bind_comfort(pybind11::module_& m);   // ISO 2631-1 weightings and metrics
+void bind_analyse(pybind11::module_& m);   // analyse (recordings: metrics, comfort, spectra)
 void bind_fitting(pybind11::module_& m);   // fit_hysteresis, fit_psd, load_hysteresis_record
 void bind_diagnose(pybind11::module_& m);  // diagnose
 void bind_optimise(pybind11::module_& m);  // optimise

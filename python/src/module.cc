@@ -22,6 +22,7 @@ PYBIND11_MODULE(_ridefit, m) {
   ridefit::python::bind_simulate(m);
   ridefit::python::bind_signal(m);
   ridefit::python::bind_comfort(m);
+  ridefit::python::bind_analyse(m);
   ridefit::python::bind_fitting(m);
   ridefit::python::bind_diagnose(m);
   ridefit::python::bind_optimise(m);

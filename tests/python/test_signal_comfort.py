@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import ridefit
-from conftest import dataset, read_csv, run_cli
+from conftest import assert_same_numbers, dataset, read_csv, run_cli
 
 RATE_HZ = 1000.0
 
@@ -91,3 +91,26 @@ def test_any_float_sequence_is_accepted_and_gives_the_same_spectrum():
     np.testing.assert_array_equal(ridefit.welch_psd(counts, 100.0, segment_s=4.0)["psd"],
                                   ridefit.welch_psd(counts.astype(np.float64), 100.0,
                                                     segment_s=4.0)["psd"])
+
+
+def test_analyse_with_levels_equals_the_cli(tmp_path):
+    passat = dataset("vehicles/passat_b8_front.yaml")
+    files = []
+    for force in (30, 60, 90):
+        out = tmp_path / f"fc{force}.csv"
+        run_cli("simulate", passat, dataset("excitations/iso8608_class_a_50kmh.yaml"),
+                "--duration", 6, "--set", f"coulomb_force_N={force}", "-o", out)
+        files.append(out)
+    cli = run_cli("analyse", *files, "--segment", 2, "--model", passat, "--rattle-space",
+                  "0.08,0.09", "--levels", "30,60,90", "--level-name", "coulomb_force_N",
+                  "--json").json()
+    result = ridefit.analyse(files, segment_s=2, model=passat, rattle_space_m=(0.08, 0.09),
+                             levels=[30, 60, 90], level_name="coulomb_force_N")
+    assert_same_numbers(result, cli, rtol=1e-9)
+    body = result["spectra"]["body_acc"]
+    assert body["psd"].dtype == np.float64 and body["psd"].shape == body["frequency_Hz"].shape
+    # A recording as arrays: the metrics of its CSV.
+    from_arrays = ridefit.analyse(read_csv(files[0]), segment_s=2)
+    alone = ridefit.analyse(files[0], segment_s=2)
+    for a, b in zip(from_arrays["recordings"][0]["channels"], alone["recordings"][0]["channels"]):
+        assert a["rms"] == pytest.approx(b["rms"], rel=1e-12), a["channel"]
