@@ -123,14 +123,15 @@ def test_the_gil_is_released_while_simulating(passat):
     started = time.perf_counter()
     thread = threading.Thread(target=count)
     thread.start()
-    ridefit.simulate(model, road, duration_s=30)
+    ridefit.simulate(model, road)  # 60 s: about 0.1 s of work
     finished = time.perf_counter()
     stop.set()
     thread.join()
     during = [t for t in ticks if started < t < finished]
-    # A thread blocked by the GIL would tick once every switch interval at best, not every ms.
+    # With the GIL held the thread ticks at most at the start (2 ticks measured that way);
+    # released, about once a millisecond (loose: the machine may be busy).
     assert finished - started > 0.02
-    assert len(during) >= 0.1 * (finished - started) / 0.001
+    assert len(during) >= max(10, 0.1 * (finished - started) / 0.001)
 
 
 def test_bad_arguments_are_input_errors(passat):
