@@ -82,3 +82,17 @@ def test_fit_psd_of_arrays_equals_the_cli_on_their_file(passat):
     assert_same_numbers(fit, cli.json(), rtol=1e-6)
     with pytest.raises(ridefit.InputError, match="time"):
         ridefit.fit_psd({"body_acc": arrays["body_acc"]}, passat, free=["coulomb_force_N"])
+
+
+def test_fit_hysteresis_per_file_with_compression_equals_the_cli(passat):
+    shims = [dataset(f"lab/shim_{mm}mm.csv") for mm in (0, 2, 4)]
+    free = "dahl_sigma0_N_per_m,coulomb_force_N,force_offset_N"
+    cli = run_cli("fit", "hysteresis", *shims, "--model", passat, "--free", free, "--per-file",
+                  "coulomb_force_N", "--compression", "0,2,4", "--interpolation", "linear",
+                  "--json").json()
+    fit = ridefit.fit_hysteresis(shims, passat, free=free.split(","), per_file=["coulomb_force_N"],
+                                 compression_mm=[0, 2, 4], interpolation="linear")
+    assert_same_numbers(fit, cli, rtol=1e-6, skip=("written",))
+    assert len(fit["fitted_force_N"]) == 3
+    with pytest.raises(ridefit.InputError, match="compression_mm"):
+        ridefit.fit_hysteresis(shims, passat, free=free.split(","), compression_mm=[0, 2, 4])
