@@ -168,6 +168,10 @@ void bind_simulate(py::module_& m) {
         if (!(duration_s >= 0.0) || !std::isfinite(duration_s)) {
           throw InputError(fmt::format("duration_s: {} is not a finite number >= 0 s", duration_s));
         }
+        // The CLI's --rear-delay range.
+        if (rear_delay_s && !(*rear_delay_s >= 0.0 && *rear_delay_s <= 100.0)) {
+          throw InputError(fmt::format("rear_delay_s: {} is not in [0, 100] s", *rear_delay_s));
+        }
         return model.is_quarter_car() ? simulate_quarter_car(model, road, a)
                                       : simulate_half_car(model, road, a);
       },

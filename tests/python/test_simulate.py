@@ -141,6 +141,8 @@ def test_bad_arguments_are_input_errors(passat):
         ridefit.simulate(passat, ROAD, output_rate_Hz=1e9)
     with pytest.raises(ridefit.InputError, match="rear_delay_s"):
         ridefit.simulate(passat, ROAD, rear_delay_s=0.1)
+    with pytest.raises(ridefit.InputError, match="rear_delay_s"):
+        ridefit.simulate(dataset("vehicles/ajayi_half_car.yaml"), ROAD, rear_delay_s=-1)
 
 
 def test_a_profile_road_from_arrays_equals_the_profile_excitation(tmp_path, passat):
