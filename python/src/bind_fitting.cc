@@ -83,6 +83,16 @@ fitting::HysteresisRecord record_from_dict(const py::dict& record, std::size_t i
           fmt::format("{}: time_s[{}] = {} does not increase strictly", r.source, i, r.time_s[i]));
     }
   }
+  for (const auto& [values, name] :
+       {std::pair{&r.displacement_m, "displacement_m"}, std::pair{&r.force_N, "force_N"},
+        std::pair{&r.command, "command"}}) {
+    for (std::size_t i = 0; i < values->size(); ++i) {
+      if (!std::isfinite((*values)[i])) {
+        throw InputError(fmt::format("{}: {}[{}] is {}; every value must be finite", r.source, name,
+                                     i, (*values)[i]));
+      }
+    }
+  }
   signal::require_signal(r.displacement_m, r.source, "displacement", "m");
   signal::require_signal(r.force_N, r.source, "force", "N");
   return r;

@@ -48,6 +48,10 @@ def test_fit_hysteresis_refuses_what_the_cli_refuses(passat):
              "force_N": np.arange(10.0)}
     with pytest.raises(ridefit.InputError, match="at least 20"):
         ridefit.fit_hysteresis(short, passat, free=["coulomb_force_N"])
+    record = ridefit.load_hysteresis_record(TRIANGLE)
+    record["force_N"][100] = np.nan
+    with pytest.raises(ridefit.InputError, match=r"force_N\[100\] is nan"):
+        ridefit.fit_hysteresis(record, passat, free=["coulomb_force_N"])
     message = run_cli("fit", "hysteresis", TRIANGLE, "--model", passat, "--free", "friction",
                       expect=2).error_message()
     with pytest.raises(ridefit.InputError) as error:
