@@ -230,7 +230,8 @@ def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], m
                    starts: Optional[Mapping[str, float]] = None, loss: str = "none",
                    loss_scale_N: float = 5.0, rtol: float = 1e-6, interpolation: str = "spline",
                    max_iterations: int = 100, compression_mm: Iterable[float] = (),
-                   max_nrmse_percent: float = 10.0) -> Dict[str, Any]:
+                   max_nrmse_percent: float = 10.0, output: Optional[PathLike] = None,
+                   keep: bool = False) -> Dict[str, Any]:
     """Fits the strut's parameters to rig records, as `ridefit fit hysteresis --json` does.
 
     records: one or a list of records, each a CSV path or a dict of arrays {'time_s',
@@ -241,8 +242,10 @@ def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], m
 
     Returns the CLI's JSON structure (parameters with standard errors, correlation, cost,
     nrmse_percent, explains_data, ...) plus 'fitted_force_N' (an array per record) and
-    'records' (the measured arrays). Raises RunError when the fit does not converge; a fit
-    that does not explain the data is returned with explains_data False."""
+    'records' (the measured arrays) and 'written'. output: the fitted model file (YAML, the
+    model file's schema; one per record with per-file parameters, as the CLI's -o), written
+    when the fit explains the data or with keep. Raises RunError when the fit does not
+    converge; a fit that does not explain the data is returned with explains_data False."""
     if isinstance(records, (str, os.PathLike, Mapping)):
         records = [records]
     return _ridefit._fit_hysteresis(
@@ -250,7 +253,7 @@ def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], m
         {k: (float(v[0]), float(v[1])) for k, v in (bounds or {}).items()},
         {k: float(v) for k, v in (starts or {}).items()}, loss, float(loss_scale_N),
         float(rtol), interpolation, int(max_iterations), [float(c) for c in compression_mm],
-        float(max_nrmse_percent))
+        float(max_nrmse_percent), os.fspath(output) if output else "", bool(keep))
 
 
 def fit_psd(measurement: Union[PathLike, Mapping[str, Any]], model: ModelLike,
@@ -258,19 +261,22 @@ def fit_psd(measurement: Union[PathLike, Mapping[str, Any]], model: ModelLike,
             band_Hz: Tuple[float, float] = (0.5, 30.0), segment_s: float = 10.0,
             starts: int = 1, max_iterations: int = 50, loss: str = "none", rtol: float = 1e-4,
             body_noise_psd: Optional[float] = None, wheel_noise_psd: Optional[float] = None,
-            max_nrmse_percent: float = 10.0) -> Dict[str, Any]:
+            max_nrmse_percent: float = 10.0, output: Optional[PathLike] = None,
+            keep: bool = False) -> Dict[str, Any]:
     """Fits quarter-car parameters to a measurement's acceleration spectra, as
     `ridefit fit psd --json` does. measurement: a CSV (time, road unless `excitation`,
     body_acc and/or wheel_acc, optionally current or voltage) or the same as a dict of arrays
     in SI units (a SimulationResult too). Returns the CLI's JSON structure plus 'spectra'
-    (frequency_Hz, measured and fitted PSDs)."""
+    (frequency_Hz, measured and fitted PSDs) and 'written'. output: the fitted model file
+    (YAML, the model file's schema; the CLI's -o), written when the fit explains the data or
+    with keep."""
     with _recording_files([measurement]) as (path,):
         return _ridefit._fit_psd(
             path, _model(model), list(free),
             os.fspath(excitation) if excitation is not None else "",
             (float(band_Hz[0]), float(band_Hz[1])), float(segment_s), int(starts),
             int(max_iterations), loss, float(rtol), body_noise_psd, wheel_noise_psd,
-            float(max_nrmse_percent))
+            float(max_nrmse_percent), os.fspath(output) if output else "", bool(keep))
 
 
 def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Sequence[Any]],

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
@@ -27,6 +28,8 @@
 #include "ridefit/fitting/robust_loss.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
+#include "ridefit/io/model_values_file.h"
+#include "ridefit/io/output_paths.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/signal/signal_presence.h"
 
@@ -141,6 +144,8 @@ struct HysteresisArguments {
   int max_iterations;
   std::vector<double> compression_mm;
   double max_nrmse_percent;
+  std::string output;  // the fitted model (YAML), "" for none: the CLI's -o
+  bool keep;           // write it even when it does not explain the data
 };
 
 // The CLI's flag checks (fit_hysteresis_command.cc), in the arguments' names.
@@ -176,6 +181,22 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
   std::vector<fitting::HysteresisRecord> records = records_of(record_list);
   const io::QuarterCarFile& file = model.quarter_car("fit_hysteresis");
   check_arguments(a, records.size());
+  // With per-file parameters and several records, one model per record (as the CLI's -o).
+  std::vector<std::filesystem::path> model_outputs;
+  if (!a.output.empty()) {
+    if (records.size() == 1 || a.per_file.empty()) {
+      model_outputs.emplace_back(a.output);
+    } else {
+      for (const auto& r : records)
+        model_outputs.push_back(io::output_for_input(a.output, r.source));
+    }
+  }
+  std::vector<std::filesystem::path> inputs = {model.path()};
+  for (const auto& r : records) {
+    if (std::filesystem::exists(r.source)) inputs.emplace_back(r.source);
+  }
+  io::RunOutputs outputs(inputs);
+  for (const auto& path : model_outputs) outputs.add_file(path, "output");
   fitting::HysteresisFitOptions options;
   options.free = a.free;
   options.per_file = a.per_file;
@@ -210,7 +231,17 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
   for (double mm : a.compression_mm) compression_m.push_back(1e-3 * mm);
   const fitting::HysteresisFitReport report =
       fitting::report_hysteresis_fit(records, fit, chosen, compression_m);
+  py::list written;
+  if (fit.explains_data || a.keep) {
+    for (std::size_t r = 0; r < model_outputs.size(); ++r) {
+      io::write_model_with_values(model.path(), fitting::model_file_values(fit.fitted[r], a.free),
+                                  model_outputs[r],
+                                  "Fitted by ridefit.fit_hysteresis from " + model.name());
+      written.append(model_outputs[r].string());
+    }
+  }
   py::dict summary = to_python(fitting::summary_json(fit, report));
+  summary["written"] = written;
   py::list fitted;
   for (auto& force : fit.fitted_force_N) fitted.append(to_numpy(std::move(force)));
   summary["fitted_force_N"] = fitted;
@@ -232,6 +263,8 @@ struct PsdArguments {
   std::optional<double> body_noise_psd;
   std::optional<double> wheel_noise_psd;
   double max_nrmse_percent;
+  std::string output;
+  bool keep;
 };
 
 py::object fit_psd(const std::string& measurement_file, const ModelHandle& model,
@@ -240,6 +273,10 @@ py::object fit_psd(const std::string& measurement_file, const ModelHandle& model
     throw InputError("band_Hz: expected (LOW, HIGH) in Hz with LOW < HIGH, e.g. (0.5, 30)");
   }
   const io::QuarterCarFile& file = model.quarter_car("fit_psd");
+  std::vector<std::filesystem::path> inputs = {measurement_file, model.path()};
+  if (!a.excitation.empty()) inputs.emplace_back(a.excitation);
+  io::RunOutputs outputs(inputs);
+  outputs.add_file(a.output, "output");
   const fitting::PsdMeasurement measurement =
       fitting::load_psd_measurement(measurement_file, a.excitation);
   for (const auto& [noise, name] : {std::pair{a.body_noise_psd, "body_noise_psd"},
@@ -272,7 +309,18 @@ py::object fit_psd(const std::string& measurement_file, const ModelHandle& model
         "--starts 5 or fewer free parameters",
         fit.iterations, fit.termination));
   }
+  py::list written;
+  if (!a.output.empty() && (adequacy.explains_data || a.keep)) {
+    std::vector<std::pair<std::string, double>> values;
+    for (std::size_t i = 0; i < fit.names.size(); ++i)
+      values.emplace_back(fit.names[i], fit.values[i]);
+    io::write_model_with_values(
+        model.path(), values, a.output,
+        fmt::format("Fitted by ridefit.fit_psd from {} and {}", model.name(), measurement_file));
+    written.append(a.output);
+  }
   py::dict summary = to_python(fitting::summary_json(fit, adequacy));
+  summary["written"] = written;
   py::dict spectra;
   spectra["frequency_Hz"] = to_numpy(std::move(fit.frequency_Hz));
   spectra["measured_body_psd"] = to_numpy(std::move(fit.measured_body_psd));
@@ -300,7 +348,7 @@ void bind_fitting(py::module_& m) {
          std::vector<std::string> per_file, std::map<std::string, std::pair<double, double>> bounds,
          std::map<std::string, double> starts, std::string loss, double loss_scale_N, double rtol,
          std::string interpolation, int max_iterations, std::vector<double> compression_mm,
-         double max_nrmse_percent) {
+         double max_nrmse_percent, std::string output, bool keep) {
         const HysteresisArguments a{std::move(free),
                                     std::move(per_file),
                                     std::move(bounds),
@@ -311,7 +359,9 @@ void bind_fitting(py::module_& m) {
                                     std::move(interpolation),
                                     max_iterations,
                                     std::move(compression_mm),
-                                    max_nrmse_percent};
+                                    max_nrmse_percent,
+                                    std::move(output),
+                                    keep};
         return fit_hysteresis(records, model, a);
       },
       "ridefit.fit_hysteresis without its defaults");
@@ -320,10 +370,12 @@ void bind_fitting(py::module_& m) {
       [](const std::string& measurement, const ModelHandle& model, std::vector<std::string> free,
          std::string excitation, std::pair<double, double> band_Hz, double segment_s, int starts,
          int max_iterations, std::string loss, double rtol, std::optional<double> body_noise_psd,
-         std::optional<double> wheel_noise_psd, double max_nrmse_percent) {
-        const PsdArguments a{std::move(free), std::move(excitation), band_Hz,          segment_s,
-                             starts,          max_iterations,        std::move(loss),  rtol,
-                             body_noise_psd,  wheel_noise_psd,       max_nrmse_percent};
+         std::optional<double> wheel_noise_psd, double max_nrmse_percent, std::string output,
+         bool keep) {
+        const PsdArguments a{
+            std::move(free),   std::move(excitation), band_Hz, segment_s,      starts,
+            max_iterations,    std::move(loss),       rtol,    body_noise_psd, wheel_noise_psd,
+            max_nrmse_percent, std::move(output),     keep};
         return fit_psd(measurement, model, a);
       },
       "ridefit.fit_psd without its defaults");

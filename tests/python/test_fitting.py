@@ -100,3 +100,28 @@ def test_fit_hysteresis_per_file_with_compression_equals_the_cli(passat):
     assert len(fit["fitted_force_N"]) == 3
     with pytest.raises(ridefit.InputError, match="compression_mm"):
         ridefit.fit_hysteresis(shims, passat, free=free.split(","), compression_mm=[0, 2, 4])
+
+
+def test_the_fitted_model_files_equal_the_cli_outputs(tmp_path, passat):
+    free = FREE + ",force_offset_N"
+    cli_file = tmp_path / "cli.yaml"
+    run_cli("fit", "hysteresis", TRIANGLE, "--model", passat, "--free", free,
+            "--interpolation", "linear", "-o", cli_file)
+    python_file = tmp_path / "python.yaml"
+    fit = ridefit.fit_hysteresis(TRIANGLE, passat, free=free.split(","), interpolation="linear",
+                                 output=python_file)
+    assert fit["written"] == [str(python_file)]
+    assert ridefit.load_model(python_file).parameters == ridefit.load_model(cli_file).parameters
+    with pytest.raises(ridefit.InputError, match="output"):  # an input is never replaced
+        ridefit.fit_hysteresis(TRIANGLE, passat, free=["coulomb_force_N"], output=passat)
+
+    measurement = dataset("hidden/damper_friction.csv")
+    cli_file = tmp_path / "cli_psd.yaml"
+    run_cli("fit", "psd", measurement, "--model", passat, "--free", "coulomb_force_N", "-o",
+            cli_file, expect=None)
+    python_file = tmp_path / "python_psd.yaml"
+    fit = ridefit.fit_psd(measurement, passat, free=["coulomb_force_N"], output=python_file)
+    assert fit["written"] == ([str(python_file)] if fit["explains_data"] else [])
+    if fit["explains_data"]:
+        assert (ridefit.load_model(python_file).parameters
+                == ridefit.load_model(cli_file).parameters)
