@@ -191,10 +191,16 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
         model_outputs.push_back(io::output_for_input(a.output, r.source));
     }
   }
-  std::vector<std::filesystem::path> inputs = {model.path()};
+  std::vector<std::filesystem::path> files;
   for (const auto& r : records) {
-    if (std::filesystem::exists(r.source)) inputs.emplace_back(r.source);
+    if (std::filesystem::exists(r.source)) files.emplace_back(r.source);
   }
+  if (const auto repeated = io::first_repeated_file(files)) {
+    throw InputError(fmt::format(
+        "{} is given twice; a repeated record would count twice in the fit", repeated->string()));
+  }
+  std::vector<std::filesystem::path> inputs = files;
+  inputs.push_back(model.path());
   io::RunOutputs outputs(inputs);
   for (const auto& path : model_outputs) outputs.add_file(path, "output");
   fitting::HysteresisFitOptions options;

@@ -52,6 +52,11 @@ def test_fit_hysteresis_refuses_what_the_cli_refuses(passat):
     record["force_N"][100] = np.nan
     with pytest.raises(ridefit.InputError, match=r"force_N\[100\] is nan"):
         ridefit.fit_hysteresis(record, passat, free=["coulomb_force_N"])
+    message = run_cli("fit", "hysteresis", TRIANGLE, TRIANGLE, "--model", passat, "--free",
+                      "coulomb_force_N", expect=2).error_message()
+    with pytest.raises(ridefit.InputError) as error:
+        ridefit.fit_hysteresis([TRIANGLE, TRIANGLE], passat, free=["coulomb_force_N"])
+    assert str(error.value) == message
     message = run_cli("fit", "hysteresis", TRIANGLE, "--model", passat, "--free", "friction",
                       expect=2).error_message()
     with pytest.raises(ridefit.InputError) as error:
