@@ -11,7 +11,9 @@
 #include <sstream>
 
 #include "command_options.h"
+#include "distributed_sweep.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/distributed/mpi_session.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/output_paths.h"
@@ -117,8 +119,9 @@ void run(const SweepFlags& flags) {
   const bool tty = isatty(fileno(stderr)) != 0;
   const auto start = std::chrono::steady_clock::now();
   double last_report = 0.0;
-  const auto rows =
-      study::run_half_car_sweep(sweep, flags.threads, [&](std::size_t done, std::size_t total) {
+  const distributed::MpiSession& session = *distributed::MpiSession::current();
+  const auto rows = run_distributed_sweep(
+      session, sweep, flags.threads, [&](std::size_t done, std::size_t total) {
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (elapsed < 1.0 || (elapsed - last_report < 0.5 && done < total)) return;
@@ -129,6 +132,7 @@ void run(const SweepFlags& flags) {
       });
   const double elapsed_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!session.root()) return;  // rank 0 alone writes and reports
   if (!flags.output_file.empty()) write_csv(sweep, rows, flags.output_file);
   if (!flags.plot_file.empty()) io::draw_figure(figure_of(sweep, rows), flags.plot_file);
   if (flags.json) {
@@ -185,7 +189,10 @@ void register_sweep(CLI::App& app) {
       ->check(CLI::ExistingFile);
   command->add_option("-o,--output", flags->output_file, "Results CSV, one row per run");
   command->add_option("--plot", flags->plot_file, "Draw the study's `plot:` (.png or .svg)");
-  command->add_option("--threads", flags->threads, "Threads (default: every core)")
+  command
+      ->add_option("--threads", flags->threads,
+                   "Threads (default: every core; under mpirun, each rank's share of its "
+                   "machine's cores)")
       ->check(CLI::Range(1u, 256u));
   command->add_flag("--json", flags->json, "Print every run's results as JSON");
   command->callback([flags] { run(*flags); });

@@ -290,13 +290,31 @@ std::vector<SweepPoint> expand(const HalfCarSweep& sweep) {
   return points;
 }
 
-std::vector<SweepRow> run_half_car_sweep(
-    const HalfCarSweep& sweep, unsigned threads,
-    const std::function<void(std::size_t, std::size_t)>& progress) {
-  std::vector<SweepPoint> points = expand(sweep);
+namespace {
+
+struct RoadCase {
+  LoadCaseRoad road;
+  LoadCaseSettings settings;  // method kFrequency or kTime, decided once for every run
+};
+
+}  // namespace
+
+struct PreparedSweep::State {
+  std::filesystem::path study_file;
+  std::vector<SweepPoint> points;
+  std::vector<io::HalfCarFile> models;
+  std::map<std::pair<std::size_t, double>, RoadCase> roads;
+};
+
+PreparedSweep::PreparedSweep(const HalfCarSweep& sweep, unsigned threads)
+    : state_(std::make_unique<State>()) {
+  state_->study_file = sweep.study_file;
+  std::vector<SweepPoint>& points = state_->points;
+  points = expand(sweep);
   // Every model first, so a value the model rejects stops the study before it runs.
   const io::HalfCarFile base = io::load_half_car(sweep.model_file);
-  std::vector<io::HalfCarFile> models(points.size());
+  std::vector<io::HalfCarFile>& models = state_->models;
+  models.resize(points.size());
   common::parallel_for(points.size(), threads, [&](std::size_t i) {
     try {
       models[i] = car_at(base, sweep, points[i]);
@@ -311,11 +329,7 @@ std::vector<SweepRow> run_half_car_sweep(
   const bool linear = std::all_of(models.begin(), models.end(), [](const io::HalfCarFile& m) {
     return m.make_model().is_linear();
   });
-  struct RoadCase {
-    LoadCaseRoad road;
-    LoadCaseSettings settings;  // method kFrequency or kTime, decided once for every run
-  };
-  std::map<std::pair<std::size_t, double>, RoadCase> roads;
+  auto& roads = state_->roads;
   for (auto& point : points) {
     const auto key = std::make_pair(point.road, point.speed_m_per_s);
     if (roads.count(key)) continue;
@@ -356,27 +370,38 @@ std::vector<SweepRow> run_half_car_sweep(
                                    sweep.study_file.string(), sweep.roads[point.road].first));
     }
   }
-  std::vector<SweepRow> rows(points.size());
+}
+
+PreparedSweep::~PreparedSweep() = default;
+
+std::size_t PreparedSweep::runs() const { return state_->points.size(); }
+
+SweepRow PreparedSweep::run(std::size_t i) const {
+  const SweepPoint& point = state_->points.at(i);
+  const RoadCase& c = state_->roads.at({point.road, point.speed_m_per_s});
+  const auto evaluation = evaluate_on_load_case(state_->models[i].make_model(), c.road, c.settings,
+                                                state_->study_file.string());
+  SweepRow row;
+  row.point = point;
+  row.frequency_domain = evaluation.frequency_domain;
+  row.metrics = evaluation.metrics;
+  row.point.speed_m_per_s = evaluation.frequency_domain
+                                ? c.road.spectrum->speed_m_per_s
+                                : c.road.input->speed_m_per_s().value_or(0.0);
+  return row;
+}
+
+std::vector<SweepRow> run_half_car_sweep(
+    const HalfCarSweep& sweep, unsigned threads,
+    const std::function<void(std::size_t, std::size_t)>& progress) {
+  const PreparedSweep prepared(sweep, threads);
+  std::vector<SweepRow> rows(prepared.runs());
   std::size_t done = 0;
   common::parallel_for(
-      points.size(), threads,
-      [&](std::size_t i) {
-        const SweepPoint& point = points[i];
-        const RoadCase& c = roads.at({point.road, point.speed_m_per_s});
-        const auto evaluation = evaluate_on_load_case(models[i].make_model(), c.road, c.settings,
-                                                      sweep.study_file.string());
-        SweepRow row;
-        row.point = point;
-        row.frequency_domain = evaluation.frequency_domain;
-        row.metrics = evaluation.metrics;
-        row.point.speed_m_per_s = evaluation.frequency_domain
-                                      ? c.road.spectrum->speed_m_per_s
-                                      : c.road.input->speed_m_per_s().value_or(0.0);
-        rows[i] = std::move(row);
-      },
+      rows.size(), threads, [&](std::size_t i) { rows[i] = prepared.run(i); },
       [&](std::size_t) {
         ++done;
-        if (progress) progress(done, points.size());
+        if (progress) progress(done, rows.size());
       });
   return rows;
 }

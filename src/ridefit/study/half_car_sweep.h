@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -78,6 +79,26 @@ struct SweepRow {
   SweepPoint point;
   bool frequency_domain = false;
   HalfCarMetrics metrics;
+};
+
+// The study ready to run: every run's car made and checked, every road (a spectrum or a
+// generated profile per road and speed) made once. Construction throws InputError for a value
+// the model rejects (naming the run), a settle time not below a road's duration, or a road
+// without a speed. run(i) evaluates run i alone, so runs may go to threads or to processes.
+class PreparedSweep {
+ public:
+  // `threads` make the cars (0 = every core).
+  explicit PreparedSweep(const HalfCarSweep& sweep, unsigned threads = 0);
+  PreparedSweep(const PreparedSweep&) = delete;
+  PreparedSweep& operator=(const PreparedSweep&) = delete;
+  ~PreparedSweep();
+
+  std::size_t runs() const;
+  SweepRow run(std::size_t i) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 // Runs every point on `threads` threads (0 = every core); `progress(done, total)` after each.

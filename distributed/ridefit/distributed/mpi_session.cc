@@ -1,0 +1,73 @@
+#include "ridefit/distributed/mpi_session.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
+
+#ifdef RIDEFIT_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace ridefit::distributed {
+namespace {
+
+const MpiSession* the_session = nullptr;
+
+// Open MPI, MPICH and PMIx-based launchers each set one of these in every process they start.
+bool launched_by_mpi() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"}) {
+    if (std::getenv(name) != nullptr) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+MpiSession::MpiSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv) {
+#ifdef RIDEFIT_HAVE_MPI
+  if (launched_by_mpi()) {
+    int provided = MPI_THREAD_SINGLE;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided);
+    active_ = true;
+    serialized_ = provided >= MPI_THREAD_SERIALIZED;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    MPI_Comm node;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    MPI_Comm_size(node, &ranks_on_node_);
+    MPI_Comm_free(&node);
+  }
+#endif
+  the_session = this;
+}
+
+MpiSession::~MpiSession() {
+  the_session = nullptr;
+#ifdef RIDEFIT_HAVE_MPI
+  if (active_) MPI_Finalize();
+#endif
+}
+
+void MpiSession::abort(int exit_code) const {
+#ifdef RIDEFIT_HAVE_MPI
+  if (active_) MPI_Abort(MPI_COMM_WORLD, exit_code);
+#endif
+  std::exit(exit_code);
+}
+
+const MpiSession* MpiSession::current() { return the_session; }
+
+bool MpiSession::built_with_mpi() {
+#ifdef RIDEFIT_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+unsigned default_threads_per_rank(const MpiSession& session) {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return std::max(1u, cores / static_cast<unsigned>(std::max(1, session.ranks_on_this_node())));
+}
+
+}  // namespace ridefit::distributed

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ridefit/distributed/mpi_session.h"
+
+namespace ridefit::distributed {
+
+struct TaskFarmOptions {
+  // Threads per rank running its tasks (0 = default_threads_per_rank).
+  unsigned threads = 0;
+  // Tasks handed out at a time (0 = chosen from the count: about 16 chunks per rank, at most
+  // 64 tasks, so slow tasks do not stall the end and fast ones do not flood rank 0).
+  std::size_t chunk = 0;
+  // Called on rank 0 (one call at a time) as tasks finish: (done, total).
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+// Runs tasks 0 … count−1, where run(i) returns task i's result as bytes, over the ranks of the
+// session: rank 0 hands out chunks of tasks as ranks ask for them (dynamic scheduling) and, when
+// MPI allows a second thread to call it, runs chunks itself between requests; every rank runs
+// a chunk on its threads. Returns on rank 0 every task's result in task order, and nothing on
+// the other ranks; so for any number of ranks rank 0 holds the same bytes as one process.
+//
+// Every rank must call it with the same count. A task that throws stops the handing out of new
+// chunks: the ranks finish what they hold and stop, and rank 0 throws the exception of the
+// lowest failing task it knows of, as InputError, RunError or std::runtime_error as thrown,
+// its message prefixed with the rank and the task ("rank 2, run 17: …") when more than one
+// rank runs. The other ranks return an empty result. Without MPI (one rank) it is
+// common::parallel_for with the exception unchanged.
+std::vector<std::string> run_task_farm(const MpiSession& session, std::size_t count,
+                                       const std::function<std::string(std::size_t)>& run,
+                                       const TaskFarmOptions& options = {});
+
+}  // namespace ridefit::distributed

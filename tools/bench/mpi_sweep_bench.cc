@@ -1,0 +1,72 @@
+// 10 000 linear half-car configurations (damping × spring stiffness of both axles, 100 × 100)
+// on seed 001's gravel road at 40 km/h, frequency domain, swept by
+// `mpirun -np N ridefit sweep STUDY --threads 1` for N = 1 and 2 ranks. Wall time of the whole
+// command, launch included, as a user sees it (UseManualTime). Target: 2 ranks at least 1.8×
+// faster than 1. Skipped in a build without MPI.
+//   mpi_sweep_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+const std::filesystem::path& study_file() {
+  static const std::filesystem::path path = [] {
+    const std::string root = RIDEFIT_SOURCE_DIR;
+    const auto file = std::filesystem::temp_directory_path() /
+                      ("ridefit_mpi_sweep_bench_" + std::to_string(getpid()) + ".yaml");
+    std::ofstream(file) << "model: " << root << "/datasets/vehicles/ajayi_half_car.yaml\n"
+                        << "roads:\n  gravel: " << root
+                        << "/datasets/excitations/gravel_road_seed001.yaml\n"
+                        << "speeds_km_per_h: [40]\n"
+                        << "vary:\n  - parameter: [front.damping_Ns_per_m, rear.damping_Ns_per_m]\n"
+                        << "    range: {from: 500, to: 4000, count: 100, spacing: linear}\n"
+                        << "  - parameter: [front.spring_stiffness_N_per_m, "
+                           "rear.spring_stiffness_N_per_m]\n"
+                        << "    range: {from: 10000, to: 40000, count: 100, spacing: linear}\n";
+    return file;
+  }();
+  return path;
+}
+
+void BM_MpiSweep10000(benchmark::State& state) {
+  const std::string mpiexec = RIDEFIT_MPIEXEC;
+  if (mpiexec.empty()) {
+    state.SkipWithError("ridefit was built without MPI");
+    return;
+  }
+  const auto output = std::filesystem::temp_directory_path() /
+                      ("ridefit_mpi_sweep_bench_" + std::to_string(getpid()) + ".csv");
+  const std::string command = fmt::format(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+      "OMPI_MCA_btl_vader_single_copy_mechanism=none {} -np {} {} sweep {} --threads 1 -o {} "
+      ">/dev/null 2>&1",
+      mpiexec, state.range(0), RIDEFIT_CLI, study_file().string(), output.string());
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    if (std::system(command.c_str()) != 0) {
+      state.SkipWithError(("failed: " + command).c_str());
+      break;
+    }
+    state.SetIterationTime(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::filesystem::remove(output);
+}
+BENCHMARK(BM_MpiSweep10000)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("ranks")
+    ->Unit(benchmark::kSecond)
+    ->UseManualTime()
+    ->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();
