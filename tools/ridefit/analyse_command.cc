@@ -167,9 +167,10 @@ void register_analyse(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "analyse",
       "Spectra, ISO 2631-1 comfort values, tyre-load, travel and impact figures of recordings "
-      "(CSV with time[s] and name[unit] columns); with --levels, their correlation with a "
+      "(CSV with time[s] and name[unit] columns, or .mat); with --levels, their correlation with a "
       "parameter");
-  command->add_option("files", flags->files, "Recordings (CSV); PSDs are averaged over them")
+  command
+      ->add_option("files", flags->files, "Recordings (CSV or .mat); PSDs are averaged over them")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--channel", flags->channels,

@@ -122,7 +122,8 @@ void register_road(CLI::App& app) {
       "road", "ISO 8608 class and IRI (ASTM E1926) of a road profile (CSV or an OpenCRG track)");
   command
       ->add_option("profile", flags->profile_file,
-                   "Profile CSV (distance[m],elevation[m]) or OpenCRG road (.crg)")
+                   "Profile CSV (distance[m],elevation[m]), .mat with those channels, or OpenCRG "
+                   "road (.crg)")
       ->required();
   command->add_option("--lateral-offset", flags->lateral_offset_m,
                       "OpenCRG: the track's lateral position v in m (default 0, the reference "

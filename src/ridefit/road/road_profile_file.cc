@@ -9,6 +9,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/road/opencrg_file.h"
 #include "ridefit/road/road_limits.h"
 
@@ -46,7 +47,7 @@ RoadProfile read_profile_csv(const std::filesystem::path& path) {
   check_data_file(path,
                   "a road profile CSV file with a header row like distance[m],elevation[mm] "
                   "(lengths in m or mm)");
-  const io::CsvTable table = io::CsvTable::read(path);
+  const io::CsvTable table = io::read_measurement_table(path);
   RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
   table.strictly_increasing("distance");  // names the file's row
   return profile;
