@@ -1,6 +1,7 @@
 // .mat measurements through the `ridefit` program: the shipped lab record as .mat (written by
 // scipy, tools/csv_to_mat.py) gives the results of its CSV; `simulate -o out.mat` writes a file
-// `analyse` reads back to the CSV's numbers; a bad .mat is exit 2 with the file named.
+// `analyse` reads back to the CSV's numbers; a rig record as .mat is diagnosed like its CSV; a bad
+// .mat is exit 2 with the file named.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -9,6 +10,8 @@
 #include <fstream>
 #include <string>
 
+#include "ridefit/io/csv_table.h"
+#include "ridefit/io/measurement_file.h"
 #include "support/cli_runner.h"
 #include "support/passat.h"
 
@@ -108,6 +111,24 @@ TEST_F(MatCli, SimulateWritesAMatThatAnalyseReadsLikeItsCsv) {
   ASSERT_FALSE(from_mat.is_null());
   // The CSV holds each double's shortest exact text: both files carry the same values.
   expect_same_results(from_csv, from_mat, "analyse", 0.0);
+}
+
+TEST_F(MatCli, RigRecordAsMatIsDiagnosedLikeItsCsv) {
+  // A .mat has no header line: diagnose must still see a rig test (displacement, force).
+  const fs::path mat = dir_ / "shim_0mm.mat";
+  io::write_measurement_table(io::CsvTable::read(testing::dataset("lab/shim_0mm.csv")), mat);
+  const std::string diagnose = "diagnose " + testing::dataset("vehicles/passat_b8_front.yaml") +
+                               " --effects gas_force --threads 1 -q ";
+  auto from_csv =
+      json_of(diagnose + testing::dataset("lab/shim_0mm.csv") + " -o " + (dir_ / "csv").string());
+  auto from_mat = json_of(diagnose + mat.string() + " -o " + (dir_ / "mat").string());
+  ASSERT_FALSE(from_mat.is_null());
+  EXPECT_EQ(from_mat["data"], "strut_loops");
+  for (auto* j : {&from_csv, &from_mat}) {
+    j->erase("model");  // the output folders differ
+    j->erase("report");
+  }
+  expect_same_results(from_csv, from_mat, "diagnose", 1e-12);
 }
 
 TEST_F(MatCli, BadMatIsExitTwoNamingFileAndVariable) {
