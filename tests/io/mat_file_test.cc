@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <ostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -173,6 +174,9 @@ struct BadFile {
   std::string file;
   std::vector<std::string> fragments;
 };
+
+// gtest names the case by its file (it would print the struct's bytes).
+void PrintTo(const BadFile& bad, std::ostream* os) { *os << bad.file; }
 
 class MatFileBad : public ::testing::TestWithParam<BadFile> {};
 
