@@ -131,6 +131,32 @@ TEST_F(MatCli, RigRecordAsMatIsDiagnosedLikeItsCsv) {
   expect_same_results(from_csv, from_mat, "diagnose", 1e-12);
 }
 
+TEST_F(MatCli, RoadProfileAsMatIsClassifiedLikeItsCsvAndSpectraAreWrittenAsMat) {
+  const std::string csv = testing::dataset("excitations/profile_example.csv");
+  const fs::path mat = dir_ / "profile_example.mat";
+  io::write_measurement_table(io::CsvTable::read(csv), mat);
+  const fs::path psd = dir_ / "road_psd.mat";
+  const auto from_csv = json_of("road " + csv);
+  const auto from_mat = json_of("road " + mat.string() + " --psd " + psd.string());
+  ASSERT_FALSE(from_mat.is_null());
+  auto without_files = [](nlohmann::json j) {
+    j.erase("psd_file");
+    j.erase("profile");  // the files' paths
+    return j;
+  };
+  expect_same_results(without_files(from_csv), without_files(from_mat), "road", 0.0);
+  const io::CsvTable spectrum = io::read_measurement_table(psd);
+  EXPECT_EQ(spectrum.column("spatial_frequency").unit, "cycles/m");
+  EXPECT_EQ(spectrum.column("psd").unit, "m^3");
+  EXPECT_GT(spectrum.rows(), 10u);
+
+  const fs::path analyse_psd = dir_ / "analyse_psd.mat";
+  const CliRun run = run_cli("analyse " + testing::dataset("lab/triangle_3mm_1mmps.mat") +
+                             " --psd " + analyse_psd.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(io::read_measurement_table(analyse_psd).column("force_psd").unit, "N^2/Hz");
+}
+
 TEST_F(MatCli, BadMatIsExitTwoNamingFileAndVariable) {
   const std::string bad = std::string(RIDEFIT_SOURCE_DIR) + "/tests/data/mat/bad_no_unit.mat";
   const fs::path psd = dir_ / "psd.csv";
