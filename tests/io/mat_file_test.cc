@@ -216,6 +216,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"bad_time_not_increasing.mat",
                 {"row 51, column 'time'", "must be strictly increasing"}},
         BadFile{"bad_two_structs.mat", {"2 structs ('a', 'b'"}},
+        BadFile{"bad_struct_beside_channels.mat",
+                {"struct 'meta' beside the top-level variable 'time'"}},
         BadFile{"bad_no_channels.mat", {"no channels"}},
         BadFile{"bad_v4.mat", {"MAT v4", "v5 or v7.3"}},
         BadFile{"bad_not_a_mat.mat", {"not a MATLAB .mat file", "scipy.io.savemat"}},

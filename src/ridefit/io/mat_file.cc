@@ -230,23 +230,23 @@ class MatReader {
   // Top-level channels, or the fields of the one struct that holds them.
   void collect(const std::vector<MatVar>& top) {
     std::vector<const matvar_t*> structs;
-    bool numeric_at_top = false;
+    std::string first_other;  // the first top-level variable that is no struct
     for (const auto& var : top) {
       const std::string name = var->name;
       if (name == "units" || name == "description") continue;
       if (var->class_type == MAT_C_STRUCT) {
         structs.push_back(var.get());
-      } else {
-        numeric_at_top = true;
+      } else if (first_other.empty()) {
+        first_other = name;
       }
     }
-    if (numeric_at_top && !structs.empty()) {
+    if (!first_other.empty() && !structs.empty()) {
       throw InputError(fmt::format(
-          "{}: struct '{}' beside top-level channels; keep every channel either at the top "
-          "level or as the fields of one struct",
-          file_, structs.front()->name));
+          "{}: struct '{}' beside the top-level variable '{}'; keep every channel either at the "
+          "top level or as the fields of one struct",
+          file_, structs.front()->name, first_other));
     }
-    if (!numeric_at_top && structs.size() > 1) {
+    if (first_other.empty() && structs.size() > 1) {
       throw InputError(
           fmt::format("{}: {} structs ('{}', '{}', ...); the channels must be the fields of one "
                       "struct (or top-level variables)",

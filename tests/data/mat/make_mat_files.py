@@ -140,6 +140,7 @@ def main(out):
     back = time.copy()
     back[50] = back[49]
     bad("time_not_increasing", time=back)
+    bad("struct_beside_channels", meta={"rig": "shaker 2"})
     v5(out / "bad_two_structs.mat", {"a": good, "b": good})
     v5(out / "bad_no_channels.mat", {"units": u2})
     scipy.io.savemat(out / "bad_v4.mat", good, format="4")
