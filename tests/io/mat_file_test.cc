@@ -89,8 +89,8 @@ TEST(MatFile, ReadsV73TopLevelVariablesAndUnitsStruct) {
   expect_closed_forms(read_mat_table(data("variables_v73.mat")), true);
 }
 
-TEST(MatFile, ReadsV73StructWithAStringDescription) {
-  expect_closed_forms(read_mat_table(data("struct_v73.mat")), false);
+TEST(MatFile, ReadsV73DeflatedStructWithAStringDescription) {
+  expect_closed_forms(read_mat_table(data("struct_v73_deflated.mat")), false);
 }
 
 TEST(MatFile, MeasurementFileDispatchesOnTheExtension) {

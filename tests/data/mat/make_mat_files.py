@@ -42,9 +42,10 @@ def h5_attr_class(obj, name):
     aid.write(np.array(name.encode(), dtype=f"S{len(name)}"), mtype=tid)
 
 
-def h5_vector(group, name, values):
+def h5_vector(group, name, values, **storage):
     # MATLAB is column-major: an Nx1 column vector is an HDF5 dataset of shape (1, N).
-    ds = group.create_dataset(name, data=np.asarray(values, dtype=np.float64).reshape(1, -1))
+    ds = group.create_dataset(name, data=np.asarray(values, dtype=np.float64).reshape(1, -1),
+                              **storage)
     h5_attr_class(ds, "double")
 
 
@@ -105,11 +106,12 @@ def main(out):
     v73(out / "variables_v73.mat", variables)
 
     def struct(f):
+        # Chunked and deflated, as MATLAB's save -v7.3 stores larger arrays.
         d = h5_struct(f, "data", ["time", "body_acc"])
-        h5_vector(d, "time", time)
-        h5_vector(d, "body_acc", body_acc)
+        h5_vector(d, "time", time, chunks=(1, 64), compression="gzip")
+        h5_vector(d, "body_acc", body_acc, chunks=(1, 64), compression="gzip")
         h5_string(f, "description", "time[s], body_acc[g]")
-    v73(out / "struct_v73.mat", struct)
+    v73(out / "struct_v73_deflated.mat", struct)
 
     # Bad files: each breaks one rule; the test asserts the message.
     good = {"time": time, "body_acc": body_acc}
