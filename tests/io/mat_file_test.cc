@@ -221,6 +221,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"bad_no_channels.mat", {"no channels"}},
         BadFile{"bad_v4.mat", {"MAT v4", "v5 or v7.3"}},
         BadFile{"bad_not_a_mat.mat", {"not a MATLAB .mat file", "scipy.io.savemat"}},
+        BadFile{"bad_damaged_dimensions.mat",
+                {"variable 'time' claims 1728053448x1 values", "the file is damaged"}},
         BadFile{"missing.mat", {"file not found"}}),
     [](const ::testing::TestParamInfo<BadFile>& param) {
       std::string name = fs::path(param.param.file).stem().string();

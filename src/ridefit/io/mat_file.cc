@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -50,10 +51,33 @@ const char* const kHowToGiveUnits =
     "give it as a field of a `units` struct (units.body_acc = 'm/s^2') or as an entry "
     "body_acc[m/s^2] of a `description` variable";
 
+// Saturates instead of wrapping: a damaged header's dimensions must not multiply to a small n.
 std::size_t element_count(const matvar_t& var) {
   std::size_t n = 1;
-  for (int d = 0; d < var.rank; ++d) n *= var.dims[d];
+  for (int d = 0; d < var.rank; ++d) {
+    if (var.dims[d] == 0) return 0;
+    if (n > std::numeric_limits<std::size_t>::max() / var.dims[d]) {
+      n = std::numeric_limits<std::size_t>::max();
+    } else {
+      n *= var.dims[d];
+    }
+  }
   return n;
+}
+
+// matio fills `data` from the file's own sizes; a damaged file can claim more elements than
+// it holds, so every read of `data` is checked against the bytes matio allocated first.
+bool data_fits(const matvar_t& var, std::size_t element_size) {
+  if (var.data == nullptr || element_size == 0 || var.data_size < 0 ||
+      static_cast<std::size_t>(var.data_size) != element_size) {
+    return false;
+  }
+  std::size_t n = 1;
+  for (int d = 0; d < var.rank; ++d) {
+    if (var.dims[d] != 0 && n > var.nbytes / var.dims[d]) return false;  // overflow
+    n *= var.dims[d];
+  }
+  return n <= var.nbytes / element_size;
 }
 
 std::string shape_of(const matvar_t& var) {
@@ -112,36 +136,37 @@ std::string_view class_name(matio_classes c) {
 }
 
 template <typename T>
-std::vector<double> as_doubles(const void* data, std::size_t n) {
-  const T* typed = static_cast<const T*>(data);
-  std::vector<double> values(n);
-  for (std::size_t k = 0; k < n; ++k) values[k] = static_cast<double>(typed[k]);
+std::optional<std::vector<double>> as_doubles(const matvar_t& var) {
+  if (!data_fits(var, sizeof(T))) return std::nullopt;
+  const T* typed = static_cast<const T*>(var.data);
+  std::vector<double> values(element_count(var));
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = static_cast<double>(typed[k]);
   return values;
 }
 
+// std::nullopt for a type ridefit does not read or data that does not fit its dimensions.
 std::optional<std::vector<double>> numeric_values(const matvar_t& var) {
-  const std::size_t n = element_count(var);
   switch (var.data_type) {
     case MAT_T_DOUBLE:
-      return as_doubles<double>(var.data, n);
+      return as_doubles<double>(var);
     case MAT_T_SINGLE:
-      return as_doubles<float>(var.data, n);
+      return as_doubles<float>(var);
     case MAT_T_INT8:
-      return as_doubles<std::int8_t>(var.data, n);
+      return as_doubles<std::int8_t>(var);
     case MAT_T_UINT8:
-      return as_doubles<std::uint8_t>(var.data, n);
+      return as_doubles<std::uint8_t>(var);
     case MAT_T_INT16:
-      return as_doubles<std::int16_t>(var.data, n);
+      return as_doubles<std::int16_t>(var);
     case MAT_T_UINT16:
-      return as_doubles<std::uint16_t>(var.data, n);
+      return as_doubles<std::uint16_t>(var);
     case MAT_T_INT32:
-      return as_doubles<std::int32_t>(var.data, n);
+      return as_doubles<std::int32_t>(var);
     case MAT_T_UINT32:
-      return as_doubles<std::uint32_t>(var.data, n);
+      return as_doubles<std::uint32_t>(var);
     case MAT_T_INT64:
-      return as_doubles<std::int64_t>(var.data, n);
+      return as_doubles<std::int64_t>(var);
     case MAT_T_UINT64:
-      return as_doubles<std::uint64_t>(var.data, n);
+      return as_doubles<std::uint64_t>(var);
     default:
       return std::nullopt;
   }
@@ -153,8 +178,9 @@ std::vector<std::string> char_rows(const matvar_t& var) {
   const std::size_t rows = var.rank >= 1 ? var.dims[0] : 0;
   const std::size_t n = element_count(var);
   const std::size_t cols = rows == 0 ? 0 : n / rows;
+  const std::size_t size = var.data_size > 0 ? static_cast<std::size_t>(var.data_size) : 0;
+  if ((size != 1 && size != 2 && size != 4) || !data_fits(var, size)) return {};
   std::vector<std::string> lines(rows);
-  if (var.data == nullptr) return lines;
   for (std::size_t c = 0; c < cols; ++c) {
     for (std::size_t r = 0; r < rows; ++r) {
       const std::size_t k = r + c * rows;
@@ -209,9 +235,27 @@ class MatReader {
           "(MATLAB's save -v7 or -v7.3, scipy.io.savemat(..., format='5'))",
           file_));
     }
+    // zlib inflates at most about 1032:1; a variable claiming more elements than that is a
+    // damaged header, refused before matio allocates for it.
+    std::error_code ec;
+    const std::uintmax_t file_bytes = std::filesystem::file_size(path_, ec);
+    const std::size_t most_elements = ec ? 0 : 1100 * static_cast<std::size_t>(file_bytes) + 4096;
     std::vector<std::string> names;
     while (MatVar info{Mat_VarReadNextInfo(mat.get())}) {
-      if (info->name != nullptr) names.emplace_back(info->name);
+      if (most_elements != 0 && element_count(*info) > most_elements) {
+        throw InputError(fmt::format(
+            "{}: variable '{}' claims {} values, more than a file of {} bytes holds; the file "
+            "is damaged",
+            file_, info->name == nullptr ? "" : info->name, shape_of(*info), file_bytes));
+      }
+      // A damaged file can make matio return the same variable forever: names are unique.
+      if (info->name == nullptr ||
+          std::find(names.begin(), names.end(), info->name) != names.end()) {
+        throw InputError(
+            fmt::format("{}: variable '{}' appears twice or has no name; the file is damaged",
+                        file_, info->name == nullptr ? "" : info->name));
+      }
+      names.emplace_back(info->name);
     }
     std::vector<MatVar> top;
     for (const auto& name : names) {
@@ -280,6 +324,9 @@ class MatReader {
     const unsigned n = Mat_VarGetNumberOfFields(const_cast<matvar_t*>(&s));
     char* const* fields = Mat_VarGetStructFieldnames(&s);
     for (unsigned f = 0; f < n; ++f) {
+      if (fields == nullptr || fields[f] == nullptr) {
+        throw InputError(fmt::format("{}: a field of '{}' cannot be read", file_, s.name));
+      }
       const std::string field = fields[f];
       matvar_t* value = Mat_VarGetStructFieldByIndex(const_cast<matvar_t*>(&s), f, 0);
       if (value == nullptr) {
@@ -310,7 +357,7 @@ class MatReader {
     if (element_count(var) == 0) fail(fmt::format("is empty ({})", shape_of(var)));
     if (!is_vector(var)) fail(fmt::format("is a {} matrix; a channel is a vector", shape_of(var)));
     std::optional<std::vector<double>> values = numeric_values(var);
-    if (!values) fail("holds a numeric type ridefit cannot read");
+    if (!values) fail("holds data that cannot be read (an unknown type, or a damaged file)");
     for (std::size_t k = 0; k < values->size(); ++k) {
       if (!std::isfinite((*values)[k])) {
         fail(fmt::format("row {} is {}; every value must be finite", k + 1, (*values)[k]));
@@ -343,6 +390,9 @@ class MatReader {
     const unsigned n = Mat_VarGetNumberOfFields(const_cast<matvar_t*>(&var));
     char* const* fields = Mat_VarGetStructFieldnames(&var);
     for (unsigned f = 0; f < n; ++f) {
+      if (fields == nullptr || fields[f] == nullptr) {
+        throw InputError(fmt::format("{}: a field of '{}' cannot be read", file_, label));
+      }
       const std::string field = fields[f];
       const matvar_t* value = Mat_VarGetStructFieldByIndex(const_cast<matvar_t*>(&var), f, 0);
       const std::string entry = label + "." + field;

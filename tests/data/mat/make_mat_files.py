@@ -4,7 +4,9 @@ scipy.io.savemat (MAT v5) and h5py (MAT v7.3 = HDF5 with MATLAB's 512-byte heade
 
 Run with Debian's /usr/bin/python3 (python3-scipy, python3-h5py):
     /usr/bin/python3 tests/data/mat/make_mat_files.py tests/data/mat
-The files are committed, so the test suite needs no Python.
+The files are committed, so the test suite needs no Python. One is not written here:
+bad_damaged_dimensions.mat is a v5 file from this script with random bytes overwritten (a
+mutation smoke test found it), whose header claims a 1728053448x1 `time`.
 
 Closed forms the test checks (N = 200 samples, k = 0..N-1):
     time      = k / 1000 s        (file 'struct': k ms, stored as int32)
