@@ -72,6 +72,14 @@ TEST(MatFile, ReadsTopLevelRowVectorsWithAUnitsStructV5Uncompressed) {
   EXPECT_EQ(table.columns().front().name, "time") << "the file's order is kept";
 }
 
+TEST(MatFile, ReadsALogicalChannelAsZeroAndOne) {
+  const CsvTable table = read_mat_table(data("logical_v5.mat"));
+  expect_closed_forms(table, false);
+  const CsvColumn& stuck = table.column("stuck");
+  EXPECT_EQ(stuck.unit, "1");
+  for (std::size_t k = 0; k < kSamples; ++k) EXPECT_EQ(stuck.values[k], k % 3 == 0 ? 1.0 : 0.0);
+}
+
 TEST(MatFile, ReadsTheFieldsOfOneStructWithACellDescriptionV5Compressed) {
   // time is int32 in ms; units come from description = {'time[ms]', 'body_acc[g]', ...}.
   expect_closed_forms(read_mat_table(data("struct_v5_compressed.mat")), true);

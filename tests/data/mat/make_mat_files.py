@@ -12,7 +12,7 @@ Closed forms the test checks (N = 200 samples, k = 0..N-1):
     time      = k / 1000 s        (file 'struct': k ms, stored as int32)
     body_acc  = 0.1 sin(2 pi 5 time) g           -> 9.80665 * that in m/s^2
     travel    = 10 cos(2 pi 2 time) mm, float32  -> 1e-3 * that in m
-    stuck     = k mod 2, int8, unit 1
+    stuck     = k mod 2, int8, unit 1     (file 'logical': k mod 3 == 0, logical)
 """
 import pathlib
 import sys
@@ -94,6 +94,10 @@ def main(out):
     v5(out / "description_v5.mat",
        {"time": time, "body_acc": body_acc, "travel": travel,
         "description": np.array(["time[s]", "body_acc[g]", "travel[mm]"])})
+    # A logical channel (MATLAB's true/false; scipy writes numpy bools so).
+    v5(out / "logical_v5.mat",
+       {"time": time, "body_acc": body_acc, "stuck": k % 3 == 0,
+        "units": {"time": "s", "body_acc": "g", "stuck": "1"}})
     # Units inside the struct, beside the channels.
     v5(out / "struct_units_v5.mat",
        {"rec": {"time": time, "body_acc": body_acc, "units": {"time": "s", "body_acc": "g"}}})
