@@ -1,5 +1,6 @@
 // Every reader of measurements takes a .mat as well as a CSV: the same file written both ways
-// (CSV text, and .mat by ridefit's writer) gives the same profile, measured road and rig record.
+// (CSV text, and .mat by ridefit's writer) gives the same profile, measured road, rig record and
+// vehicle measurement.
 #include "ridefit/io/measurement_file.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "ridefit/fitting/hysteresis_record.h"
+#include "ridefit/fitting/psd_fit.h"
 #include "ridefit/road/measured_road.h"
 #include "ridefit/road/road_profile_file.h"
 
@@ -112,6 +114,26 @@ TEST_F(MeasurementFile, HysteresisRecordFromMatEqualsItsCsv) {
   EXPECT_EQ(a.displacement_m, b.displacement_m);
   EXPECT_EQ(a.force_N, b.force_N);
   EXPECT_EQ(b.source, mat.string());
+}
+
+TEST_F(MeasurementFile, PsdMeasurementFromMatEqualsItsCsv) {
+  CsvTable table;
+  table.add("time", "s", ramp(4000, 0.002));
+  table.add("road", "mm", samples(4000, 0.002, 4.0, 1.1));
+  table.add("body_acc", "g", samples(4000, 0.002, 0.05, 1.3));
+  table.add("current", "A", samples(4000, 0.002, 1.0, 0.2));
+  const auto [csv, mat] = both(table, "drive");
+  const fitting::PsdMeasurement a = fitting::load_psd_measurement(csv);
+  const fitting::PsdMeasurement b = fitting::load_psd_measurement(mat);
+  EXPECT_EQ(a.time_s, b.time_s);
+  EXPECT_EQ(a.sample_rate_Hz, b.sample_rate_Hz);
+  EXPECT_NEAR(b.sample_rate_Hz, 500.0, 1e-9);
+  EXPECT_EQ(a.body_acc_m_per_s2, b.body_acc_m_per_s2);
+  EXPECT_TRUE(b.wheel_acc_m_per_s2.empty());
+  ASSERT_TRUE(b.road != nullptr);
+  EXPECT_TRUE(b.road->has_command()) << "the current column reaches the road";
+  EXPECT_EQ(a.road->at(1.234).elevation_m, b.road->at(1.234).elevation_m);
+  EXPECT_EQ(a.road->at(1.234).command, b.road->at(1.234).command);
 }
 
 }  // namespace
