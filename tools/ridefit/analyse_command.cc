@@ -12,6 +12,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/gnuplot_figure.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
@@ -147,7 +148,8 @@ void run(const AnalyseFlags& flags) {
   if (!flags.plot_file.empty()) {
     io::draw_figure(study::recording_figure(analysis, options, levels), flags.plot_file);
   }
-  if (!flags.psd_file.empty()) psd_table(analysis, levels).write(flags.psd_file);
+  if (!flags.psd_file.empty())
+    io::write_measurement_table(psd_table(analysis, levels), flags.psd_file);
   if (flags.json) {
     nlohmann::json j = study::to_json(analysis, options, levels);
     if (!flags.psd_file.empty()) j["psd_file"] = flags.psd_file;
@@ -167,9 +169,10 @@ void register_analyse(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "analyse",
       "Spectra, ISO 2631-1 comfort values, tyre-load, travel and impact figures of recordings "
-      "(CSV with time[s] and name[unit] columns); with --levels, their correlation with a "
+      "(CSV with time[s] and name[unit] columns, or .mat); with --levels, their correlation with a "
       "parameter");
-  command->add_option("files", flags->files, "Recordings (CSV); PSDs are averaged over them")
+  command
+      ->add_option("files", flags->files, "Recordings (CSV or .mat); PSDs are averaged over them")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--channel", flags->channels,
@@ -221,7 +224,8 @@ void register_analyse(CLI::App& app) {
       ->delimiter(',');
   command->add_option("--level-name", flags->level_name,
                       "Name of the levels' parameter, e.g. coulomb_force_N");
-  command->add_option("--psd", flags->psd_file, "Write the averaged PSDs and bands to this CSV");
+  command->add_option("--psd", flags->psd_file,
+                      "Write the averaged PSDs and bands to this CSV (or .mat)");
   command->add_option("--plot", flags->plot_file, "Draw the figure (.png or .svg)");
   command->add_flag("--json", flags->json, "Print the results as JSON");
   command->callback([flags] { run(*flags); });

@@ -171,11 +171,12 @@ void register_diagnose(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   command
-      ->add_option("records", flags->records,
-                   "Vehicle: one or two measurements (CSV: time, road unless --excitation, "
-                   "body_acc and/or wheel_acc); the first is fitted, the second (or the second "
-                   "half) judges. Rig: strut tests (CSV: time, displacement, force); the 1st, "
-                   "3rd, ... are fitted, the 2nd, 4th, ... judge (one: its halves)")
+      ->add_option(
+          "records", flags->records,
+          "Vehicle: one or two measurements (CSV or .mat: time, road unless --excitation, "
+          "body_acc and/or wheel_acc); the first is fitted, the second (or the second "
+          "half) judges. Rig: strut tests (CSV or .mat: time, displacement, force); the 1st, "
+          "3rd, ... are fitted, the 2nd, 4th, ... judge (one: its halves)")
       ->required()
       ->check(CLI::ExistingFile);
   command

@@ -192,7 +192,7 @@ void register_fit_hysteresis(CLI::App& fit) {
       "hysteresis",
       "Fit Dahl friction, top mount and damping to strut rig tests (CSV: time, displacement, "
       "force)");
-  command->add_option("files", flags->files, "Rig tests (CSV); fitted together")
+  command->add_option("files", flags->files, "Rig tests (CSV or .mat); fitted together")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("--model", flags->model_file, "Quarter-car model file: start values")

@@ -121,8 +121,10 @@ void register_fit_psd(CLI::App& fit) {
   CLI::App* command = fit.add_subcommand(
       "psd",
       "Fit quarter-car parameters (e.g. the top-mount stiffness) to measured body and wheel "
-      "acceleration spectra (CSV: time, road, body_acc and/or wheel_acc)");
-  command->add_option("file", psd->file, "Measurement (CSV)")->required()->check(CLI::ExistingFile);
+      "acceleration spectra (CSV or .mat: time, road, body_acc and/or wheel_acc)");
+  command->add_option("file", psd->file, "Measurement (CSV or .mat)")
+      ->required()
+      ->check(CLI::ExistingFile);
   command->add_option("--model", psd->model_file, "Quarter-car model file: start values")
       ->required()
       ->check(CLI::ExistingFile);

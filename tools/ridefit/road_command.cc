@@ -20,6 +20,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/gnuplot_figure.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/road/international_roughness_index.h"
 #include "ridefit/road/iso8608_classification.h"
@@ -43,14 +44,14 @@ struct RoadFlags {
   bool json = false;
 };
 
-// The spectrum as a CSV that reads back (CsvTable units); written atomically.
+// The spectrum as a CSV (or .mat) that reads back (CsvTable units); written atomically.
 void write_psd(const std::string& file, const road::Iso8608Classification& result) {
   io::CsvTable table;
   table.add("spatial_frequency", "cycles/m", result.spatial_frequency_cycles_per_m);
   table.add("psd", "m^3", result.psd_m3);
   table.add("psd_lower", "m^3", result.psd_lower_m3);
   table.add("psd_upper", "m^3", result.psd_upper_m3);
-  table.write(file);
+  io::write_measurement_table(table, file);
 }
 
 // `--speed 50km/h` or `--speed 13.9m/s` in m/s; a bare number is refused, since both units are
@@ -154,8 +155,8 @@ void register_road(CLI::App& app) {
       "vehicle record's road channel)");
   command
       ->add_option("profile", flags->profile_file,
-                   "Profile CSV (distance[m],elevation[m]), OpenCRG road (.crg), or vehicle "
-                   "record over time (time[s],road[m],…; needs --speed)")
+                   "Profile CSV (distance[m],elevation[m]) or .mat with those channels, OpenCRG "
+                   "road (.crg), or vehicle record over time (time[s],road[m],…; needs --speed)")
       ->required();
   command->add_option("--lateral-offset", flags->lateral_offset_m,
                       "OpenCRG: the track's lateral position v in m (default 0, the reference "
@@ -170,7 +171,8 @@ void register_road(CLI::App& app) {
                       "IRI reporting segment in m (default 100, or the whole profile if shorter)");
   command->add_option("--psd-segment", flags->psd_segment_m,
                       "Welch segment for the PSD in m (default min(100, length/4))");
-  command->add_option("--psd", flags->psd_file, "Write the PSD and its 90 % interval to a CSV");
+  command->add_option("--psd", flags->psd_file,
+                      "Write the PSD and its 90 % interval to a CSV (or .mat)");
   command->add_option("--plot", flags->plot_file,
                       "Figure (.png or .svg): the PSD with the ISO 8608 classes, IRI per segment");
   command->add_flag("--json", flags->json, "Print the results as JSON");

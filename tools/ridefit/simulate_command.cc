@@ -1,4 +1,4 @@
-// ridefit simulate MODEL.yaml EXCITATION.yaml -o out.csv [--json]
+// ridefit simulate MODEL.yaml EXCITATION.yaml -o out.csv|out.mat [--json]
 // One subcommand for both models: the model file's kind picks the quarter car or the half car;
 // the tables and summaries of each are in the library (study/response_table,
 // study/simulation_summary).
@@ -14,6 +14,7 @@
 #include "command_options.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/io/half_car_file.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/io/model_kind.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/road/excitation_file.h"
@@ -94,7 +95,8 @@ void simulate_quarter_car(const SimulateFlags& flags) {
   const auto options = options_from<simulate::SimulationOptions>(flags, *road);
   const auto [response, wall_time_s] = timed_simulation(car, *road, options);
   if (!flags.output_file.empty()) {
-    study::response_table(response, road->command_unit()).write(flags.output_file);
+    io::write_measurement_table(study::response_table(response, road->command_unit()),
+                                flags.output_file);
   }
   const study::SimulationRun run = run_of(flags, wall_time_s);
   if (flags.json) {
@@ -122,7 +124,9 @@ void simulate_half_car(const SimulateFlags& flags) {
   const auto metrics = flags.output_rate_Hz >= 500.0
                            ? std::optional(study::half_car_metrics(response, file.parameters))
                            : std::nullopt;
-  if (!flags.output_file.empty()) study::response_table(response).write(flags.output_file);
+  if (!flags.output_file.empty()) {
+    io::write_measurement_table(study::response_table(response), flags.output_file);
+  }
   const study::SimulationRun run = run_of(flags, wall_time_s);
   if (flags.json) {
     std::cout << study::summary_json(run, response, metrics).dump(2) << "\n";
@@ -145,14 +149,16 @@ void run(const SimulateFlags& flags) {
 void register_simulate(CLI::App& app) {
   auto flags = std::make_shared<SimulateFlags>();
   CLI::App* command = app.add_subcommand(
-      "simulate", "Simulate a quarter car over an excitation and write every channel to CSV");
+      "simulate",
+      "Simulate a quarter car over an excitation and write every channel to CSV or .mat");
   command->add_option("model", flags->model_file, "Model file (YAML)")
       ->required()
       ->check(CLI::ExistingFile);
   command->add_option("excitation", flags->excitation_file, "Excitation file (YAML with `type`)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("-o,--output", flags->output_file, "Output CSV (written atomically)");
+  command->add_option("-o,--output", flags->output_file,
+                      "Output file: CSV, or MATLAB v5 if it ends in .mat (written atomically)");
   command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
       ->check(positive_number("Hz"))
       ->capture_default_str();

@@ -7,12 +7,13 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/signal/signal_presence.h"
 
 namespace ridefit::fitting {
 
 HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
-  const io::CsvTable table = io::CsvTable::read(csv_file);
+  const io::CsvTable table = io::read_measurement_table(csv_file);
   HysteresisRecord record;
   record.source = csv_file.string();
   record.time_s = table.time_s();

@@ -17,6 +17,7 @@
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
@@ -266,7 +267,7 @@ double floor_of(const std::optional<double>& given, const std::vector<double>& m
 
 PsdMeasurement load_psd_measurement(const std::filesystem::path& csv_file,
                                     const std::filesystem::path& excitation_file) {
-  const io::CsvTable table = io::CsvTable::read(csv_file);
+  const io::CsvTable table = io::read_measurement_table(csv_file);
   PsdMeasurement m;
   m.source = csv_file.string();
   m.time_s = table.time_s();

@@ -11,8 +11,9 @@
 
 namespace ridefit::io {
 
-void write_atomically(const std::filesystem::path& path,
-                      const std::function<void(std::ostream&)>& write) {
+void write_file_atomically(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path& temporary)>& write) {
   const std::filesystem::path dir =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!is_folder(dir)) {
@@ -30,17 +31,24 @@ void write_atomically(const std::filesystem::path& path,
       dir / fmt::format(".{}.tmp{}", path.filename().string(), static_cast<long>(getpid()));
   const TemporaryFile registered(tmp);
   try {
-    std::ofstream out(tmp);
-    if (!out) throw InputError(fmt::format("{}: cannot open for writing", path.string()));
-    write(out);
-    out.close();
-    if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
+    write(tmp);
     std::filesystem::rename(tmp, path);
   } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
     throw;
   }
+}
+
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(std::ostream&)>& write) {
+  write_file_atomically(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp);
+    if (!out) throw InputError(fmt::format("{}: cannot open for writing", path.string()));
+    write(out);
+    out.close();
+    if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
+  });
 }
 
 void check_output_file(const std::filesystem::path& path,

@@ -15,6 +15,13 @@ namespace ridefit::io {
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write);
 
+// The same for a writer that needs a file name rather than a stream (a C library such as
+// matio): `write` creates `temporary` (in the destination's directory), which is renamed to
+// `path` when it returns and removed when it throws.
+void write_file_atomically(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path& temporary)>& write);
+
 // Checks, before any work is done, that `path` can take an output file: its directory exists,
 // it is not a directory or a device, and it is none of `inputs` (a run must not overwrite
 // its own input). `flag` names the option in messages (e.g. "-o"). Throws InputError.

@@ -314,7 +314,8 @@ const std::vector<double>& CsvTable::strictly_increasing(const std::string& name
       throw InputError(fmt::format(
           "{}: row {}, column '{}': {} {} is not greater than the previous row's {} {}; '{}' "
           "must be strictly increasing",
-          source_.string(), k + 2, name, c.values[k], c.unit, c.values[k - 1], c.unit, name));
+          source_.string(), k + first_data_row_, name, c.values[k], c.unit, c.values[k - 1], c.unit,
+          name));
     }
   }
   return c.values;

@@ -23,7 +23,10 @@ class CsvTable {
   static CsvTable read(const std::filesystem::path& path);
 
   CsvTable() = default;
-  explicit CsvTable(std::filesystem::path source) : source_(std::move(source)) {}
+  // `first_data_row`: how messages number the first value of a column (2 in a CSV file, under
+  // its header; 1 in a .mat file, as MATLAB indexes).
+  explicit CsvTable(std::filesystem::path source, std::size_t first_data_row = 2)
+      : source_(std::move(source)), first_data_row_(first_data_row) {}
 
   // Converts `values` from `unit` to SI. The unit must be one read() accepts (the list is in
   // csv_table.cc), so every written file reads back; otherwise, and for a duplicate name or a
@@ -39,7 +42,8 @@ class CsvTable {
   // A `time` column that must be strictly increasing (checked, the row is named).
   const std::vector<double>& time_s() const;
   // Any column that must be strictly increasing (e.g. `distance` of a road profile). Rows are
-  // numbered as lines of the file: the header is row 1, the first data row is row 2.
+  // numbered as lines of a CSV file (the header is row 1, the first data row is row 2), or
+  // from `first_data_row`.
   const std::vector<double>& strictly_increasing(const std::string& name) const;
 
   // Writes atomically (temporary file, then rename): a failed write leaves no file.
@@ -48,6 +52,7 @@ class CsvTable {
  private:
   std::filesystem::path source_;
   std::vector<CsvColumn> columns_;
+  std::size_t first_data_row_ = 2;
 };
 
 // Converts `value` in `unit` to SI for the quantity kind implied by the unit; returns the

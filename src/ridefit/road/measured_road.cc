@@ -11,6 +11,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/road/resample.h"
 #include "ridefit/road/road_limits.h"
 
@@ -101,7 +102,7 @@ MeasuredRoad load_measured_road(const std::filesystem::path& csv_file, const std
                   fmt::format("a measurement CSV file with a header row like time[s],{}[mm] (time "
                               "in s or ms, the channel in m or mm) and at least {} data rows",
                               channel, kMinimumSamples));
-  const io::CsvTable table = io::CsvTable::read(csv_file);
+  const io::CsvTable table = io::read_measurement_table(csv_file);
   const std::vector<double>& time = table.time_s();
   const io::CsvColumn& road = table.column(channel);
   if (road.unit != "m") {

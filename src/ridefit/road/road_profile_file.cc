@@ -10,6 +10,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/csv_table.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/road/opencrg_file.h"
 #include "ridefit/road/road_limits.h"
 
@@ -72,18 +73,26 @@ RoadProfile record_profile(const io::CsvTable& table, const RoadProfileSource& s
   return profile;
 }
 
-// A CSV: a profile over distance, or a vehicle record over time.
-RoadProfile csv_profile(const std::filesystem::path& path, const RoadProfileSource& source) {
+// The columns distance and elevation, distance strictly increasing.
+RoadProfile profile_over_distance(const io::CsvTable& table) {
+  RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
+  table.strictly_increasing("distance");  // names the file's row
+  return profile;
+}
+
+// A CSV or .mat: a profile over distance, or a vehicle record over time.
+RoadProfile table_profile(const std::filesystem::path& path, const RoadProfileSource& source) {
   if (source.lateral_offset_m) {
     throw InputError(fmt::format(
-        "{}: a lateral offset picks a track of an OpenCRG grid (.crg); a CSV is one track "
-        "already",
+        "{}: a lateral offset picks a track of an OpenCRG grid (.crg); a CSV or .mat is one "
+        "track already",
         path.string()));
   }
   check_data_file(path,
-                  "a road profile CSV file with a header row like distance[m],elevation[mm], or a "
-                  "vehicle record like time[s],road[mm],body_acc[m/s^2] (lengths in m or mm)");
-  const io::CsvTable table = io::CsvTable::read(path);
+                  "a road profile CSV (or .mat) file with a header row like "
+                  "distance[m],elevation[mm], or a vehicle record like "
+                  "time[s],road[mm],body_acc[m/s^2] (lengths in m or mm)");
+  const io::CsvTable table = io::read_measurement_table(path);
   if (!table.has("distance") && table.has("time")) return record_profile(table, source);
   if (source.speed_m_per_s || !source.channel.empty()) {
     throw InputError(fmt::format(
@@ -91,7 +100,7 @@ RoadProfile csv_profile(const std::filesystem::path& path, const RoadProfileSour
         "record over time (a time column)",
         path.string()));
   }
-  return read_profile_csv(path);
+  return profile_over_distance(table);
 }
 
 }  // namespace
@@ -100,10 +109,7 @@ RoadProfile read_profile_csv(const std::filesystem::path& path) {
   check_data_file(path,
                   "a road profile CSV file with a header row like distance[m],elevation[mm] "
                   "(lengths in m or mm)");
-  const io::CsvTable table = io::CsvTable::read(path);
-  RoadProfile profile{length_column(table, "distance"), length_column(table, "elevation")};
-  table.strictly_increasing("distance");  // names the file's row
-  return profile;
+  return profile_over_distance(io::read_measurement_table(path));
 }
 
 RoadProfile load_road_profile(const std::filesystem::path& path, const RoadProfileSource& source) {
@@ -117,7 +123,7 @@ RoadProfile load_road_profile(const std::filesystem::path& path, const RoadProfi
     }
     profile = opencrg_profile(path, source.lateral_offset_m.value_or(0.0));
   } else {
-    profile = csv_profile(path, source);
+    profile = table_profile(path, source);
   }
   try {
     check_road_profile(profile, 4);

@@ -8,6 +8,7 @@
 
 #include "ridefit/comfort/weighting_filter.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/io/measurement_file.h"
 #include "ridefit/signal/band_power.h"
 #include "ridefit/signal/correlation.h"
 #include "ridefit/signal/psd_average.h"
@@ -115,7 +116,7 @@ ChannelMetrics channel_metrics(const Recording& recording, const io::CsvColumn& 
 Recording load_recording(const std::filesystem::path& csv_file) {
   Recording recording;
   recording.source = csv_file;
-  recording.table = io::CsvTable::read(csv_file);
+  recording.table = io::read_measurement_table(csv_file);
   recording.sample_rate_Hz =
       signal::uniform_sample_rate_Hz(recording.table.time_s(), csv_file.string());
   return recording;
