@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iostream>
 #include <thread>
 
 #ifdef RIDEFIT_HAVE_MPI
@@ -36,6 +37,11 @@ MpiSession::MpiSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv
     MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
     MPI_Comm_size(node, &ranks_on_node_);
     MPI_Comm_free(&node);
+  }
+#else
+  if (launched_by_mpi()) {
+    std::cerr << "ridefit: warning: started by mpirun, but this ridefit was built without MPI: "
+                 "each process runs the whole command on its own\n";
   }
 #endif
   the_session = this;

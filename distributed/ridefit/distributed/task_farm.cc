@@ -25,6 +25,26 @@
 namespace ridefit::distributed {
 namespace {
 
+// The fault tests' hook: RIDEFIT_TEST_FAULT=throw:N makes task N (from 0) throw a RunError,
+// die:N ends its process at once (as a crashed rank would). Unset in every real run.
+std::function<std::string(std::size_t)> with_injected_fault(
+    const std::function<std::string(std::size_t)>& run) {
+  const char* spec = std::getenv("RIDEFIT_TEST_FAULT");
+  if (spec == nullptr) return run;
+  const std::string text = spec;
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) return run;
+  const std::string what = text.substr(0, colon);
+  const std::size_t task = std::stoul(text.substr(colon + 1));
+  return [run, what, task](std::size_t i) {
+    if (i == task && what == "throw") throw RunError("injected failure (RIDEFIT_TEST_FAULT)");
+    if (i == task && what == "die") std::_Exit(9);
+    return run(i);
+  };
+}
+
+#ifdef RIDEFIT_HAVE_MPI
+
 // What a failed task threw, carried between ranks as a kind and a message.
 struct Failure {
   int rank = 0;
@@ -87,30 +107,10 @@ std::optional<std::pair<std::size_t, std::exception_ptr>> run_chunk(
   return std::nullopt;
 }
 
-// The fault tests' hook: RIDEFIT_TEST_FAULT=throw:N makes task N (from 0) throw a RunError,
-// die:N ends its process at once (as a crashed rank would). Unset in every real run.
-std::function<std::string(std::size_t)> with_injected_fault(
-    const std::function<std::string(std::size_t)>& run) {
-  const char* spec = std::getenv("RIDEFIT_TEST_FAULT");
-  if (spec == nullptr) return run;
-  const std::string text = spec;
-  const auto colon = text.find(':');
-  if (colon == std::string::npos) return run;
-  const std::string what = text.substr(0, colon);
-  const std::size_t task = std::stoul(text.substr(colon + 1));
-  return [run, what, task](std::size_t i) {
-    if (i == task && what == "throw") throw RunError("injected failure (RIDEFIT_TEST_FAULT)");
-    if (i == task && what == "die") std::_Exit(9);
-    return run(i);
-  };
-}
-
 std::size_t chunk_size(const TaskFarmOptions& options, std::size_t count, int ranks) {
   if (options.chunk > 0) return options.chunk;
   return std::clamp<std::size_t>(count / (16 * static_cast<std::size_t>(ranks)), 1, 64);
 }
-
-#ifdef RIDEFIT_HAVE_MPI
 
 enum Tag : int { kRequest = 1, kWork = 2, kFailed = 3 };
 
