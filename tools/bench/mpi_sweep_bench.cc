@@ -2,7 +2,9 @@
 // on seed 001's gravel road at 40 km/h, frequency domain, swept by
 // `mpirun -np N ridefit sweep STUDY --threads 1` for N = 1 and 2 ranks. Wall time of the whole
 // command, launch included, as a user sees it (UseManualTime). Target: 2 ranks at least 1.8×
-// faster than 1. Skipped in a build without MPI.
+// faster than 1. Skipped in a build without MPI. For the scaling estimate (README): the
+// preparation every rank repeats (BM_PrepareSweep10000: the 10 000 cars made and checked, the
+// road spectrum once) and one run alone (BM_OneRun).
 //   mpi_sweep_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 #include <fmt/core.h>
@@ -13,6 +15,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "ridefit/study/half_car_sweep.h"
 
 namespace {
 
@@ -66,6 +70,27 @@ BENCHMARK(BM_MpiSweep10000)
     ->Unit(benchmark::kSecond)
     ->UseManualTime()
     ->Iterations(1);
+
+void BM_PrepareSweep10000(benchmark::State& state) {
+  const auto sweep = ridefit::study::load_half_car_sweep(study_file());
+  for (auto _ : state) {
+    const ridefit::study::PreparedSweep prepared(sweep, 1);
+    benchmark::DoNotOptimize(prepared.runs());
+  }
+}
+BENCHMARK(BM_PrepareSweep10000)->Unit(benchmark::kMillisecond);
+
+void BM_OneRun(benchmark::State& state) {
+  const auto sweep = ridefit::study::load_half_car_sweep(study_file());
+  const ridefit::study::PreparedSweep prepared(sweep, 1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    auto row = prepared.run(i);
+    benchmark::DoNotOptimize(row.metrics.seat_acc_wk_rms_m_per_s2);
+    i = (i + 37) % prepared.runs();
+  }
+}
+BENCHMARK(BM_OneRun)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

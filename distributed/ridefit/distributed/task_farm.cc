@@ -143,11 +143,15 @@ void send(const std::string& bytes, int to, int tag) {
 std::string receive(int& from, int& tag, bool poll) {
   MPI_Status status;
   if (poll) {
+    // Backing off from 20 µs to 1 ms: a request waits at most about 1 ms (a chunk is tens of
+    // ms), and an idle scheduler wakes a thousand times a second, not tens of thousands.
     int arrived = 0;
+    auto pause = std::chrono::microseconds(20);
     while (true) {
       MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
       if (arrived) break;
-      std::this_thread::sleep_for(std::chrono::microseconds(100));
+      std::this_thread::sleep_for(pause);
+      pause = std::min(2 * pause, std::chrono::microseconds(1000));
     }
   } else {
     MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
