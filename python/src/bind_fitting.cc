@@ -20,6 +20,7 @@
 #include "numpy_arrays.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_adequacy.h"
+#include "ridefit/fitting/fit_convergence.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/hysteresis_fit_report.h"
 #include "ridefit/fitting/hysteresis_record.h"
@@ -227,12 +228,9 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
     py::gil_scoped_release unlocked;
     fit = fitting::fit_hysteresis_from_file_and_records(records, start, options, &chosen);
   }
-  if (!fit.converged && fit.explains_data) {
-    throw RunError(fmt::format(
-        "the fit did not converge after {} iterations ({}); no fitted model was written. Try "
-        "better start values (--start) or fewer free parameters",
-        fit.iterations, fit.termination));
-  }
+  fitting::require_convergence(fit.converged, fit.explains_data, "the fit", fit.iterations,
+                               fit.termination,
+                               "better start values (starts=) or fewer free parameters");
   std::vector<double> compression_m;
   for (double mm : a.compression_mm) compression_m.push_back(1e-3 * mm);
   const fitting::HysteresisFitReport report =
@@ -309,12 +307,8 @@ py::object fit_psd(const std::string& measurement_file, const ModelHandle& model
     fit = fitting::fit_psd(measurement, file.make_model(), options);
     adequacy = fitting::assess_psd_fit(fit, file.parameters, options, a.max_nrmse_percent);
   }
-  if (!fit.converged && adequacy.explains_data) {
-    throw RunError(fmt::format(
-        "the PSD fit did not converge after {} iterations ({}); no fitted model was written. Try "
-        "--starts 5 or fewer free parameters",
-        fit.iterations, fit.termination));
-  }
+  fitting::require_convergence(fit.converged, adequacy.explains_data, "the PSD fit", fit.iterations,
+                               fit.termination, "starts=5 or fewer free parameters");
   py::list written;
   if (!a.output.empty() && (adequacy.explains_data || a.keep)) {
     std::vector<std::pair<std::string, double>> values;

@@ -14,6 +14,7 @@
 #include "command_options.h"
 #include "fit_command.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/fit_convergence.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/hysteresis_fit_report.h"
 #include "ridefit/fitting/rig_figure.h"
@@ -148,12 +149,9 @@ void run(const FitHysteresisFlags& flags) {
   std::string chosen;
   const fitting::HysteresisFitResult fit = fitting::fit_hysteresis_from_file_and_records(
       records, start_from(model_file, flags.starts), options, &chosen);
-  if (!fit.converged && fit.explains_data) {
-    throw RunError(fmt::format(
-        "the fit did not converge after {} iterations ({}); no fitted model was written. Try "
-        "better start values (--start) or fewer free parameters",
-        fit.iterations, fit.termination));
-  }
+  fitting::require_convergence(fit.converged, fit.explains_data, "the fit", fit.iterations,
+                               fit.termination,
+                               "better start values (--start) or fewer free parameters");
   std::vector<double> compression_m;
   for (double mm : flags.compression_mm) compression_m.push_back(1e-3 * mm);
   const fitting::HysteresisFitReport report =

@@ -13,6 +13,7 @@
 #include "fit_command.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_adequacy.h"
+#include "ridefit/fitting/fit_convergence.h"
 #include "ridefit/fitting/psd_fit.h"
 #include "ridefit/fitting/psd_fit_report.h"
 #include "ridefit/io/gnuplot_figure.h"
@@ -87,12 +88,8 @@ void run(const FitPsdFlags& flags) {
   const fitting::PsdFitResult fit = fitting::fit_psd(measurement, model_file.make_model(), options);
   const fitting::FitAdequacy adequacy =
       fitting::assess_psd_fit(fit, model_file.parameters, options, flags.max_nrmse_percent);
-  if (!fit.converged && adequacy.explains_data) {
-    throw RunError(fmt::format(
-        "the PSD fit did not converge after {} iterations ({}); no fitted model was written. Try "
-        "--starts 5 or fewer free parameters",
-        fit.iterations, fit.termination));
-  }
+  fitting::require_convergence(fit.converged, adequacy.explains_data, "the PSD fit", fit.iterations,
+                               fit.termination, "--starts 5 or fewer free parameters");
   const bool written = !flags.output_file.empty() && (adequacy.explains_data || flags.keep);
   if (written) {
     std::vector<std::pair<std::string, double>> values;
