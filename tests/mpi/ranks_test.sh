@@ -63,6 +63,20 @@ for study in frequency time; do
   [ "$(wc -l <"$tmp/$study.1.csv")" -gt 3 ] || fail "$study: the sweep wrote no rows"
 done
 
+# --json under ranks says how the work was shared: 36 runs, rank 0's share and 144 bytes a run
+# gathered (17 doubles and a length) plus 16 a request.
+ranks 2 "$ridefit" sweep "$tmp/frequency.yaml" --threads 1 --json >"$tmp/ranks.json" ||
+  fail "--json under 2 ranks failed"
+grep -q '"count": 2' "$tmp/ranks.json" || fail "--json under 2 ranks: no rank count"
+python3 - "$tmp/ranks.json" <<'PY' || fail "--json under 2 ranks: the counts do not add up"
+import json, sys
+r = json.load(open(sys.argv[1]))["ranks"]
+other = 36 - r["runs_on_rank0"]
+assert 0 <= other <= 36, r
+# One worker: a first request, then one per chunk, each 16 bytes; 144 bytes per run gathered.
+assert r["bytes_received_by_rank0"] == 16 * (r["chunks_to_other_ranks"] + 1) + 144 * other, r
+PY
+
 # A run that throws (run 6 of 36, 1-based) on whichever rank took it.
 RIDEFIT_TEST_FAULT=throw:5 ranks 2 "$ridefit" sweep "$tmp/frequency.yaml" --threads 1 \
   -o "$tmp/fault.csv" >"$tmp/fault.out" 2>&1

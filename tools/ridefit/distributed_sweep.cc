@@ -5,8 +5,6 @@
 #include <string>
 #include <utility>
 
-#include "ridefit/distributed/task_farm.h"
-
 namespace ridefit::cli {
 namespace {
 
@@ -61,7 +59,8 @@ study::SweepRow decode(const std::string& bytes, study::SweepPoint point) {
 
 std::vector<study::SweepRow> run_distributed_sweep(
     const distributed::MpiSession& session, const study::HalfCarSweep& sweep, unsigned threads,
-    const std::function<void(std::size_t, std::size_t)>& progress) {
+    const std::function<void(std::size_t, std::size_t)>& progress,
+    distributed::TaskFarmStatistics* statistics) {
   const unsigned rank_threads =
       threads > 0 ? threads : distributed::default_threads_per_rank(session);
   // Every rank prepares the whole study (cheap beside the runs), so a task is only its index.
@@ -69,6 +68,7 @@ std::vector<study::SweepRow> run_distributed_sweep(
   distributed::TaskFarmOptions options;
   options.threads = rank_threads;
   options.progress = progress;
+  options.statistics = statistics;
   const std::vector<std::string> results = distributed::run_task_farm(
       session, prepared.runs(), [&](std::size_t i) { return encode(prepared.run(i)); }, options);
   if (!session.root()) return {};

@@ -120,8 +120,10 @@ void run(const SweepFlags& flags) {
   const auto start = std::chrono::steady_clock::now();
   double last_report = 0.0;
   const distributed::MpiSession& session = *distributed::MpiSession::current();
+  distributed::TaskFarmStatistics farm;
   const auto rows = run_distributed_sweep(
-      session, sweep, flags.threads, [&](std::size_t done, std::size_t total) {
+      session, sweep, flags.threads,
+      [&](std::size_t done, std::size_t total) {
         const double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (elapsed < 1.0 || (elapsed - last_report < 0.5 && done < total)) return;
@@ -129,7 +131,8 @@ void run(const SweepFlags& flags) {
         std::cerr << fmt::format("{}sweep: {}/{} runs, {:.1f} s{}", tty ? "\r" : "", done, total,
                                  elapsed, tty ? "" : "\n");
         if (tty && done == total) std::cerr << "\n";
-      });
+      },
+      &farm);
   const double elapsed_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!session.root()) return;  // rank 0 alone writes and reports
@@ -152,11 +155,19 @@ void run(const SweepFlags& flags) {
     }
     if (!flags.output_file.empty()) j["output"] = flags.output_file;
     if (!flags.plot_file.empty()) j["plot"] = flags.plot_file;
+    if (session.size() > 1) {
+      j["ranks"] = {{"count", session.size()},
+                    {"runs_on_rank0", farm.tasks_on_rank0},
+                    {"chunks_to_other_ranks", farm.chunks_handed_out},
+                    {"bytes_received_by_rank0", farm.bytes_received},
+                    {"bytes_sent_by_rank0", farm.bytes_sent}};
+    }
     std::cout << j.dump(2) << "\n";
     return;
   }
   // A compact table: the varied values and the seat / body-segment comfort figures.
-  std::cout << fmt::format("{}: {} runs in {:.2f} s\n", flags.study_file, rows.size(), elapsed_s);
+  std::cout << fmt::format("{}: {} runs in {:.2f} s{}\n", flags.study_file, rows.size(), elapsed_s,
+                           session.size() > 1 ? fmt::format(" on {} ranks", session.size()) : "");
   std::cout << fmt::format("{:<10} {:>8}", "road", "km/h");
   for (const auto& axis : sweep.axes) std::cout << fmt::format(" {:>14.14}", axis.name);
   std::cout << fmt::format(" {:>9} {:>9} {:>9} {:>9} {:>10}\n", "seat_Wk", "lower_Wk", "upper_Wk",

@@ -229,12 +229,14 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
     return {first, std::min(chunk, count - first)};
   };
 
+  TaskFarmStatistics statistics;  // the scheduler's own (one thread)
   const auto schedule = [&](bool poll) {
     int working = session.size() - 1;
     while (working > 0) {
       int from = 0;
       int tag = 0;
       const std::string message = receive(from, tag, poll);
+      statistics.bytes_received += message.size();
       std::size_t at = 0;
       if (tag == kFailed) {
         Failure f;
@@ -254,7 +256,10 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
         if (n > 0) finished(n);
       }
       const auto [first, n] = take();
-      send(work_message(first, n), from, kWork);
+      const std::string reply = work_message(first, n);
+      send(reply, from, kWork);
+      statistics.bytes_sent += reply.size();
+      if (n > 0) ++statistics.chunks_handed_out;
       if (n == 0) --working;
     }
   };
@@ -265,6 +270,7 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
       const auto [first, n] = take();
       if (n == 0) break;
       const auto fault = run_chunk(first, n, threads, run, results, [&] { finished(1); });
+      statistics.tasks_on_rank0 += n;
       if (fault) {
         const std::lock_guard<std::mutex> guard(lock);
         failures.push_back(failure_of(fault->second, 0, fault->first));
@@ -275,6 +281,7 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
   } else {
     schedule(false);  // rank 0 only schedules
   }
+  if (options.statistics) *options.statistics = statistics;
   if (!failures.empty()) {
     rethrow(*std::min_element(failures.begin(), failures.end(),
                               [](const Failure& a, const Failure& b) { return a.task < b.task; }));

@@ -9,6 +9,15 @@
 
 namespace ridefit::distributed {
 
+// What rank 0's scheduler exchanged in a run over ranks (all zero in one process): the figures
+// behind the scaling estimate.
+struct TaskFarmStatistics {
+  std::size_t chunks_handed_out = 0;  // to the other ranks
+  std::size_t bytes_received = 0;     // requests with results, and failures
+  std::size_t bytes_sent = 0;         // chunk assignments and stops
+  std::size_t tasks_on_rank0 = 0;
+};
+
 struct TaskFarmOptions {
   // Threads per rank running its tasks (0 = default_threads_per_rank).
   unsigned threads = 0;
@@ -17,6 +26,8 @@ struct TaskFarmOptions {
   std::size_t chunk = 0;
   // Called on rank 0 (one call at a time) as tasks finish: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
+  // Filled on rank 0 when given.
+  TaskFarmStatistics* statistics = nullptr;
 };
 
 // Runs tasks 0 … count−1, where run(i) returns task i's result as bytes, over the ranks of the
