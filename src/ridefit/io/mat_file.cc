@@ -460,12 +460,12 @@ class MatReader {
       if (!names.empty()) names += ", ";
       names += channel.name;
     }
-    for (const auto& [name, source] : units_) {
+    for (const auto& unit : units_) {  // (Clang 14 cannot capture a structured binding)
       const bool known = std::any_of(channels_.begin(), channels_.end(),
-                                     [&](const Channel& c) { return c.name == name; });
+                                     [&](const Channel& c) { return c.name == unit.first; });
       if (!known) {
         throw InputError(fmt::format("{}: {} names no channel; the channels are: {}", file_,
-                                     source.label, names));
+                                     unit.second.label, names));
       }
     }
     CsvTable table(path_, 1);
