@@ -63,7 +63,9 @@ void expect_named(const std::array<ParameterInfo, N>& table,
                   std::initializer_list<std::pair<const ParameterInfo*, std::string_view>> named) {
   EXPECT_EQ(named.size(), N) << "a row without a name";
   std::set<const ParameterInfo*> seen;
-  for (const auto& [row, key] : named) {
+  for (const auto& entry : named) {  // (Clang 14 cannot capture a structured binding)
+    const ParameterInfo* row = entry.first;
+    const std::string_view key = entry.second;
     SCOPED_TRACE(std::string(key));
     EXPECT_TRUE(seen.insert(row).second) << "two names for one row";
     EXPECT_TRUE(std::any_of(table.begin(), table.end(), [&](const auto& r) { return &r == row; }))

@@ -60,7 +60,8 @@ class IriOfSinusoid : public ::testing::TestWithParam<std::tuple<double, double>
 // fundamental by a further sin(π·dx/L)/(π·dx/L): 1.8 % at dx = 0.25 m and L = 2.4 m, 0.01 % at
 // dx = 0.05 m.
 TEST_P(IriOfSinusoid, EqualsTheGoldenCarSteadyStateResponse) {
-  const auto [wavelength, spacing] = GetParam();
+  const double wavelength = std::get<0>(GetParam());  // (Clang 14: no structured binding in a
+  const double spacing = std::get<1>(GetParam());     // lambda's capture)
   const double amplitude = 0.002;
   const RoadProfile profile = sampled(
       2000.0, spacing, [&](double x) { return amplitude * std::sin(2.0 * pi * x / wavelength); });
