@@ -48,9 +48,5 @@ RoadProfile read_profile_csv(const std::filesystem::path& path);
 // (check_road_profile, at least 4 samples).
 RoadProfile load_road_profile(const std::filesystem::path& path,
                               const RoadProfileSource& source = {});
-inline RoadProfile load_road_profile(const std::filesystem::path& path,
-                                     std::optional<double> lateral_offset_m) {
-  return load_road_profile(path, RoadProfileSource{lateral_offset_m, std::nullopt, {}});
-}
 
 }  // namespace ridefit::road
