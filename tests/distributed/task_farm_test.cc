@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <string>
+#include <vector>
 
 #include "ridefit/common/errors.h"
 
@@ -59,6 +60,25 @@ TEST(TaskFarm, OneProcessRethrowsTheLowestFailingTaskUnchanged) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "bad value in run 7");
   }
+}
+
+TEST(TaskFarm, OneProcessHandsOverEachResultAsItFinishes) {
+  const MpiSession session(argc, argv);
+  std::vector<std::string> seen(40);
+  std::size_t calls = 0;
+  TaskFarmOptions options;
+  options.threads = 2;
+  options.results_on_every_rank = true;  // one rank: the same results
+  options.on_result = [&](std::size_t task, const std::string& result) {
+    ++calls;  // one call at a time: no lock needed
+    seen.at(task) = result;
+  };
+  const auto results = run_task_farm(
+      session, 40, [](std::size_t i) { return std::to_string(i) + "r"; }, options);
+  EXPECT_EQ(calls, 40u);
+  EXPECT_EQ(seen, results);
+  EXPECT_EQ(results[39], "39r");
+  EXPECT_EQ(broadcast_from_root(session, "unchanged"), "unchanged");
 }
 
 TEST(TaskFarm, InjectedFaultThrowsARunErrorAtItsTask) {

@@ -1,8 +1,11 @@
 #include "ridefit/distributed/mpi_session.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
+#include <stdexcept>
 #include <thread>
 
 #ifdef RIDEFIT_HAVE_MPI
@@ -69,6 +72,20 @@ bool MpiSession::built_with_mpi() {
 #else
   return false;
 #endif
+}
+
+std::string broadcast_from_root([[maybe_unused]] const MpiSession& session, std::string bytes) {
+#ifdef RIDEFIT_HAVE_MPI
+  if (!session.active() || session.size() == 1) return bytes;
+  std::uint64_t size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  if (size > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    throw std::runtime_error("broadcast_from_root: more than 2 GiB");
+  }
+  bytes.resize(size);
+  MPI_Bcast(bytes.data(), static_cast<int>(size), MPI_BYTE, 0, MPI_COMM_WORLD);
+#endif
+  return bytes;
 }
 
 unsigned default_threads_per_rank(const MpiSession& session) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 namespace ridefit::distributed {
 
 // The process's place in an MPI run (`mpirun -np N ridefit …`). MPI is started only when the
@@ -42,6 +44,10 @@ class MpiSession {
   bool active_ = false;
   bool serialized_ = false;
 };
+
+// Rank 0's `bytes` on every rank (a collective call: every rank of the session makes it; the
+// other ranks' `bytes` are ignored). Without MPI, `bytes` unchanged.
+std::string broadcast_from_root(const MpiSession& session, std::string bytes);
 
 // The threads each rank uses by default: every core of the machine shared among this
 // machine's ranks (at least 1).

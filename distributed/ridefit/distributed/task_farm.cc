@@ -71,11 +71,14 @@ Failure failure_of(std::exception_ptr error, int rank, std::size_t task) {
   return f;
 }
 
-[[noreturn]] void rethrow(const Failure& f) {
-  const std::string message = fmt::format("rank {}, run {}: {}", f.rank, f.task + 1, f.message);
-  if (f.kind == 2) throw InputError(message);
-  if (f.kind == 1) throw RunError(message);
+[[noreturn]] void throw_as(int kind, const std::string& message) {
+  if (kind == 2) throw InputError(message);
+  if (kind == 1) throw RunError(message);
   throw std::runtime_error(message);
+}
+
+[[noreturn]] void rethrow(const Failure& f) {
+  throw_as(f.kind, fmt::format("rank {}, run {}: {}", f.rank, f.task + 1, f.message));
 }
 
 // Runs tasks [first, first + n) on `threads` threads into results[first …]; on failure, the
@@ -83,7 +86,7 @@ Failure failure_of(std::exception_ptr error, int rank, std::size_t task) {
 std::optional<std::pair<std::size_t, std::exception_ptr>> run_chunk(
     std::size_t first, std::size_t n, unsigned threads,
     const std::function<std::string(std::size_t)>& run, std::vector<std::string>& results,
-    const std::function<void()>& finished_one) {
+    const std::function<void(std::size_t)>& finished_one) {
   std::mutex lock;
   std::size_t lowest = std::numeric_limits<std::size_t>::max();
   try {
@@ -98,8 +101,8 @@ std::optional<std::pair<std::size_t, std::exception_ptr>> run_chunk(
             throw;
           }
         },
-        [&](std::size_t) {
-          if (finished_one) finished_one();
+        [&](std::size_t k) {
+          if (finished_one) finished_one(first + k);
         });
   } catch (...) {
     return std::make_pair(lowest, std::current_exception());
@@ -217,9 +220,10 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
   std::mutex lock;  // failures, progress
   std::vector<Failure> failures;
   std::size_t done = 0;
-  const auto finished = [&](std::size_t n) {
+  const auto finished = [&](std::size_t task) {
     const std::lock_guard<std::mutex> guard(lock);
-    done += n;
+    ++done;
+    if (options.on_result) options.on_result(task, results[task]);
     if (options.progress) options.progress(done, count);
   };
   const auto take = [&]() -> std::pair<std::size_t, std::size_t> {
@@ -252,8 +256,10 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
       } else {
         const std::size_t first = take_u64(message, at);
         const std::size_t n = take_u64(message, at);
-        for (std::size_t i = first; i < first + n; ++i) results[i] = take_string(message, at);
-        if (n > 0) finished(n);
+        for (std::size_t i = first; i < first + n; ++i) {
+          results[i] = take_string(message, at);
+          finished(i);
+        }
       }
       const auto [first, n] = take();
       const std::string reply = work_message(first, n);
@@ -269,7 +275,7 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
     while (true) {
       const auto [first, n] = take();
       if (n == 0) break;
-      const auto fault = run_chunk(first, n, threads, run, results, [&] { finished(1); });
+      const auto fault = run_chunk(first, n, threads, run, results, finished);
       statistics.tasks_on_rank0 += n;
       if (fault) {
         const std::lock_guard<std::mutex> guard(lock);
@@ -289,6 +295,44 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
   return results;
 }
 
+// Rank 0's results, or the exception it threw, sent to every rank; every rank returns the
+// results or throws that exception.
+std::vector<std::string> share_outcome(const MpiSession& session,
+                                       const std::function<std::vector<std::string>()>& lead_run) {
+  std::string bytes;
+  if (session.root()) {
+    try {
+      const std::vector<std::string> results = lead_run();
+      put(bytes, static_cast<std::uint64_t>(0));
+      put(bytes, static_cast<std::uint64_t>(results.size()));
+      for (const auto& r : results) put(bytes, r);
+    } catch (...) {
+      const Failure f = failure_of(std::current_exception(), 0, 0);
+      bytes.clear();
+      put(bytes, static_cast<std::uint64_t>(1));
+      put(bytes, static_cast<std::uint64_t>(f.kind));
+      put(bytes, f.message);
+    }
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      throw std::runtime_error("task farm: the results exceed 2 GiB, too many to share");
+    }
+  } else {
+    lead_run();  // a worker: runs its chunks
+  }
+  std::uint64_t size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  bytes.resize(size);
+  MPI_Bcast(bytes.data(), static_cast<int>(size), MPI_BYTE, 0, MPI_COMM_WORLD);
+  std::size_t at = 0;
+  if (take_u64(bytes, at) != 0) {
+    const int kind = static_cast<int>(take_u64(bytes, at));
+    throw_as(kind, take_string(bytes, at));
+  }
+  std::vector<std::string> results(take_u64(bytes, at));
+  for (auto& r : results) r = take_string(bytes, at);
+  return results;
+}
+
 #endif  // RIDEFIT_HAVE_MPI
 
 }  // namespace
@@ -301,6 +345,13 @@ std::vector<std::string> run_task_farm(const MpiSession& session, std::size_t co
       options.threads > 0 ? options.threads : default_threads_per_rank(session);
 #ifdef RIDEFIT_HAVE_MPI
   if (session.active() && session.size() > 1) {
+    if (options.results_on_every_rank) {
+      return share_outcome(session, [&]() -> std::vector<std::string> {
+        if (session.root()) return lead(session, count, threads, run, options);
+        work(session, count, threads, run);
+        return {};
+      });
+    }
     if (session.root()) return lead(session, count, threads, run, options);
     work(session, count, threads, run);
     return {};
@@ -310,8 +361,9 @@ std::vector<std::string> run_task_farm(const MpiSession& session, std::size_t co
   std::size_t done = 0;
   common::parallel_for(
       count, threads, [&](std::size_t i) { results[i] = run(i); },
-      [&](std::size_t) {
+      [&](std::size_t i) {
         ++done;
+        if (options.on_result) options.on_result(i, results[i]);
         if (options.progress) options.progress(done, count);
       });
   return results;

@@ -26,6 +26,13 @@ struct TaskFarmOptions {
   std::size_t chunk = 0;
   // Called on rank 0 (one call at a time) as tasks finish: (done, total).
   std::function<void(std::size_t, std::size_t)> progress;
+  // Called on rank 0 (one call at a time, in the order tasks finish, from whichever thread
+  // received the result) with each finished task's result: for what must be kept as it comes
+  // (a journal, a summary so far), so that a run that fails or is killed keeps it.
+  std::function<void(std::size_t task, const std::string& result)> on_result;
+  // Every rank returns every result (rank 0 sends them to all once all are in), and a failure
+  // is thrown on every rank alike: for runs in which every rank goes on from the results.
+  bool results_on_every_rank = false;
   // Filled on rank 0 when given.
   TaskFarmStatistics* statistics = nullptr;
 };
@@ -40,7 +47,8 @@ struct TaskFarmOptions {
 // chunks: the ranks finish what they hold and stop, and rank 0 throws the exception of the
 // lowest failing task it knows of, as InputError, RunError or std::runtime_error as thrown,
 // its message prefixed with the rank and the task ("rank 2, run 17: …") when more than one
-// rank runs. The other ranks return an empty result. Without MPI (one rank) it is
+// rank runs. The other ranks return an empty result (or, with results_on_every_rank, rank 0's
+// results or its exception). Without MPI (one rank) it is
 // common::parallel_for with the exception unchanged.
 std::vector<std::string> run_task_farm(const MpiSession& session, std::size_t count,
                                        const std::function<std::string(std::size_t)>& run,
