@@ -46,6 +46,24 @@ TEST(EvaluationJournal, ResumeFindsEveryRecordBitForBit) {
                    .has_value());
 }
 
+TEST(EvaluationJournal, ADesignMetTwiceIsWrittenOnce) {
+  // Searches side by side (threads, ranks) can meet at one design; the journal keeps it once.
+  testing::TempDir dir("ridefit_journal");
+  const auto path = dir.path() / "run.journal";
+  {
+    auto journal = EvaluationJournal::create(path, "abc");
+    journal.append(record(2.0));
+    journal.append(record(2.0));
+    journal.append(record(3.0));
+    EXPECT_EQ(journal.size(), 2u);
+    EXPECT_EQ(journal.records().size(), 2u);
+  }
+  std::ifstream in(path);
+  std::size_t lines = 0;
+  for (std::string line; std::getline(in, line);) ++lines;
+  EXPECT_EQ(lines, 3u);  // the header and two evaluations
+}
+
 TEST(EvaluationJournal, TornLastLineIsCutAndAppendingContinues) {
   testing::TempDir dir("ridefit_journal");
   const auto path = dir.path() / "run.journal";

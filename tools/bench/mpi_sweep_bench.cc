@@ -10,12 +10,11 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
-#include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "mpi_command.h"
 #include "ridefit/study/half_car_sweep.h"
 
 namespace {
@@ -40,27 +39,10 @@ const std::filesystem::path& study_file() {
 }
 
 void BM_MpiSweep10000(benchmark::State& state) {
-  const std::string mpiexec = RIDEFIT_MPIEXEC;
-  if (mpiexec.empty()) {
-    state.SkipWithError("ridefit was built without MPI");
-    return;
-  }
   const auto output = std::filesystem::temp_directory_path() /
                       ("ridefit_mpi_sweep_bench_" + std::to_string(getpid()) + ".csv");
-  const std::string command = fmt::format(
-      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-      "OMPI_MCA_btl_vader_single_copy_mechanism=none {} -np {} {} sweep {} --threads 1 -o {} "
-      ">/dev/null 2>&1",
-      mpiexec, state.range(0), RIDEFIT_CLI, study_file().string(), output.string());
-  for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    if (std::system(command.c_str()) != 0) {
-      state.SkipWithError(("failed: " + command).c_str());
-      break;
-    }
-    state.SetIterationTime(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
+  ridefit::bench::time_ridefit_under_mpirun(
+      state, fmt::format("sweep {} --threads 1 -o {}", study_file().string(), output.string()));
   std::filesystem::remove(output);
 }
 BENCHMARK(BM_MpiSweep10000)

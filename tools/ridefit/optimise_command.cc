@@ -1,5 +1,6 @@
 // ridefit optimise STUDY.yaml [-o result.yaml] [--resume JOURNAL] [--journal FILE]
 //                             [--plot FILE.png|svg] [--json] [--threads N]
+// mpirun -np N ridefit optimise …: the searches spread over the ranks, the same result.
 // Damper tuning with NLopt under friction: the optimum, its verified constraint margins, the
 // cost of ignoring friction and the comfort / road-holding trade-off. The study, its report
 // and its result files are the library's (optimisation/tuning_*); here are the flags, the
@@ -13,7 +14,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "distributed_tuning.h"
 #include "ridefit/common/errors.h"
+#include "ridefit/distributed/mpi_session.h"
 #include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/optimisation/evaluation_journal.h"
@@ -94,31 +97,51 @@ void run(const OptimiseFlags& flags) {
     throw InputError(
         "--resume JOURNAL continues that journal; give --resume or --journal, not both");
   }
+  // Under mpirun every rank runs the study alike and the searches are spread over the ranks;
+  // rank 0 alone checks and writes files, owns the journal and prints.
+  const distributed::MpiSession* session = distributed::MpiSession::current();
+  const bool over_ranks = session != nullptr && session->active() && session->size() > 1;
+  const bool root = session == nullptr || session->root();
+  const bool quiet = flags.quiet || !root;
   opt::TuningStudy study = opt::load_tuning_study(flags.study_file);
   if (flags.threads >= 0) study.evaluation.threads = static_cast<unsigned>(flags.threads);
   const opt::TuningFiles files =
       opt::tuning_files(study, flags.output_file,
                         !flags.resume_file.empty() ? flags.resume_file : flags.journal_file);
-  check_outputs(flags, study, files);
+  if (root) check_outputs(flags, study, files);
   // The roads are made (and every remaining check done) before the journal is opened, so a
   // study that cannot run never replaces an existing journal.
   opt::TuningProblem problem(study);
-  opt::EvaluationJournal journal = open_journal(flags, study, files.journal);
-  problem.attach_journal(&journal);
-  if (!flags.quiet) {
+  std::optional<opt::EvaluationJournal> journal;
+  if (root) {
+    journal.emplace(open_journal(flags, study, files.journal));
+    problem.attach_journal(&*journal);
+  }
+  std::unique_ptr<opt::SearchRunner> ranks;
+  if (over_ranks) {
+    share_journal(*session, problem, journal ? &*journal : nullptr);
+    ranks = std::make_unique<RankSearchRunner>(
+        *session, flags.threads > 0 ? static_cast<unsigned>(flags.threads) : 0u,
+        journal ? &*journal : nullptr);
+  }
+  if (!quiet) {
     std::cerr << fmt::format(
-        "optimise: journal {}{}\n", journal.path().string(),
-        flags.resume_file.empty() ? "" : fmt::format(" ({} evaluations to reuse)", journal.size()));
+        "optimise: journal {}{}{}\n", journal->path().string(),
+        flags.resume_file.empty() ? "" : fmt::format(" ({} evaluations to reuse)", journal->size()),
+        over_ranks ? fmt::format(", {} ranks", session->size()) : "");
   }
   const auto started = std::chrono::steady_clock::now();
-  const opt::TuningOutcome outcome =
-      opt::run_tuning_study(problem, [&](const std::string& stage, const std::string& line) {
-        if (flags.quiet) return;
+  const opt::TuningOutcome outcome = opt::run_tuning_study(
+      problem,
+      [&](const std::string& stage, const std::string& line) {
+        if (quiet) return;
         std::cerr << "optimise" << (stage.empty() ? "" : " (" + stage + ")") << ": " << line
                   << "\n";
-      });
+      },
+      ranks.get());
   const double wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (!root) return;
 
   const opt::WrittenFiles written = opt::written_files(files, outcome, flags.plot_file);
   const nlohmann::json result = opt::tuning_result(problem, outcome, written, wall_time_s);
@@ -127,7 +150,7 @@ void run(const OptimiseFlags& flags) {
   if (!flags.plot_file.empty()) {
     io::draw_figure(opt::tuning_figure(problem, outcome), flags.plot_file);
   }
-  journal.mark_finished();
+  journal->mark_finished();
   if (flags.json) {
     std::cout << result.dump(2) << "\n";
   } else {
@@ -162,7 +185,10 @@ void register_optimise(CLI::App& app) {
   command->add_option("--journal", flags->journal_file,
                       "Journal file (default: next to -o, else STUDY.journal here)");
   command->add_option("--plot", flags->plot_file, "Search history and trade-off (.png or .svg)");
-  command->add_option("--threads", flags->threads, "Threads for the load cases (0: every core)")
+  command
+      ->add_option("--threads", flags->threads,
+                   "Threads for the searches and load cases (0: every core; under mpirun, per "
+                   "rank, default: its share of the cores)")
       ->check(CLI::Range(0, 256));
   command->add_flag("--json", flags->json, "Print the result as JSON");
   command->add_flag("-q,--quiet", flags->quiet, "No progress on stderr");

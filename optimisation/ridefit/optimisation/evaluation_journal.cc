@@ -265,9 +265,18 @@ void EvaluationJournal::append(const JournalRecord& r) {
                   nlohmann::json(r.variant).dump(), numbers(r.x), fmt::join(cases, ","),
                   fmt::join(domains, ","));
   std::lock_guard lock(mutex_);
+  const auto [it, added] = records_.emplace(key(r.variant, r.x), r);
+  if (!added) return;  // two searches met at one design: once is enough
   out_ << line << std::flush;
   if (!out_) throw RunError(fmt::format("journal {}: write failed", path_.string()));
-  records_[key(r.variant, r.x)] = r;
+}
+
+std::vector<JournalRecord> EvaluationJournal::records() const {
+  std::lock_guard lock(mutex_);
+  std::vector<JournalRecord> all;
+  all.reserve(records_.size());
+  for (const auto& [key, record] : records_) all.push_back(record);
+  return all;
 }
 
 void EvaluationJournal::mark_finished() {

@@ -58,7 +58,10 @@ class EvaluationJournal {
   ~EvaluationJournal();
 
   std::optional<JournalRecord> find(const std::string& variant, std::span<const double> x) const;
-  void append(const JournalRecord& record);  // thread-safe
+  // Every evaluation it holds (one per variant and design).
+  std::vector<JournalRecord> records() const;
+  // Thread-safe; a design the journal holds already (for the variant) is not written again.
+  void append(const JournalRecord& record);
   // Marks the run finished (a line resume() skips): a later create() may replace the journal.
   void mark_finished();
   std::size_t size() const;

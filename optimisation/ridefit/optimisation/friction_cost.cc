@@ -1,12 +1,19 @@
 #include "ridefit/optimisation/friction_cost.h"
 
+#include <utility>
+
 namespace ridefit::optimisation {
 
-FrictionCost friction_cost(TuningProblem& problem, const OptimisationRun& aware,
-                           const ProgressSink& progress) {
+OptimisationRequest friction_blind_request(const TuningProblem& problem,
+                                           const OptimisationRun& aware,
+                                           const ProgressSink& progress) {
+  return {FrictionVariant::kBlind, aware.limits, study_start(problem.study()), progress};
+}
+
+FrictionCost friction_cost_of(TuningProblem& problem, const OptimisationRun& aware,
+                              OptimisationRun blind) {
   FrictionCost cost;
-  cost.blind = optimise(problem, FrictionVariant::kBlind, aware.limits,
-                        study_start(problem.study()), progress);
+  cost.blind = std::move(blind);
   cost.blind_with_friction =
       problem.evaluate(FrictionVariant::kStudy, Accuracy::kVerify, cost.blind.best.x);
   cost.blind_margins_with_friction = problem.margins(cost.blind_with_friction, aware.limits);
@@ -14,6 +21,14 @@ FrictionCost friction_cost(TuningProblem& problem, const OptimisationRun& aware,
   cost.comfort_loss = cost.blind_with_friction.objective - aware.verified.objective;
   cost.comfort_loss_percent = 100.0 * cost.comfort_loss / aware.verified.objective;
   return cost;
+}
+
+FrictionCost friction_cost(TuningProblem& problem, const OptimisationRun& aware,
+                           const ProgressSink& progress) {
+  LocalSearchRunner runner(problem.study().evaluation.threads);
+  return friction_cost_of(
+      problem, aware,
+      optimise_all(problem, {friction_blind_request(problem, aware, progress)}, runner).front());
 }
 
 }  // namespace ridefit::optimisation

@@ -18,6 +18,14 @@ struct FrictionCost {
   double comfort_loss_percent = 0.0;  // of the aware objective
 };
 
+// The blind optimisation: the aware run's limits, from the study's start.
+OptimisationRequest friction_blind_request(const TuningProblem& problem,
+                                           const OptimisationRun& aware,
+                                           const ProgressSink& progress = {});
+// The cost from the blind run (friction_blind_request's, optimised).
+FrictionCost friction_cost_of(TuningProblem& problem, const OptimisationRun& aware,
+                              OptimisationRun blind);
+// Both, on the threads of the study's evaluation settings.
 FrictionCost friction_cost(TuningProblem& problem, const OptimisationRun& aware,
                            const ProgressSink& progress = {});
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <nlopt.hpp>
 #include <random>
 
@@ -96,6 +98,24 @@ nlopt::opt make_optimiser(const OptimiserSettings& s, unsigned n, bool constrain
   throw std::logic_error("unknown algorithm");
 }
 
+// The best point so far: feasible before infeasible, then the lower objective (feasible) or
+// violation (infeasible); the first of equals stays.
+struct BestPoint {
+  bool found = false;
+  bool feasible = false;
+  double objective = 0.0;
+  double violation = std::numeric_limits<double>::infinity();
+
+  // True (and taken) when the point beats the best so far.
+  bool offer(bool is_feasible, double point_objective, double point_violation) {
+    const bool better = !found || (is_feasible && !feasible) ||
+                        (is_feasible == feasible &&
+                         (is_feasible ? point_objective < objective : point_violation < violation));
+    if (better) *this = {true, is_feasible, point_objective, point_violation};
+    return better;
+  }
+};
+
 struct Search {
   TuningProblem* problem = nullptr;
   FrictionVariant variant = FrictionVariant::kStudy;
@@ -108,9 +128,7 @@ struct Search {
   // The last evaluation: NLopt asks for the objective and then the constraints at one x.
   std::vector<double> last_u;
   Evaluation last;
-  bool has_best = false;
-  bool best_feasible = false;
-  double best_violation = std::numeric_limits<double>::infinity();
+  BestPoint best;
 
   const Evaluation& at(unsigned n, const double* u) {
     std::vector<double> unit(u, u + n);
@@ -130,16 +148,7 @@ struct Search {
     ++run->evaluations;
     if (!e.reused) ++run->computed;
     run->history.push_back({start, e.objective, violation, e.reused});
-    const bool better = !has_best || (feasible && !best_feasible) ||
-                        (feasible == best_feasible && (feasible ? e.objective < run->best.objective
-                                                                : violation < best_violation));
-    if (better) {
-      run->best = e;
-      has_best = true;
-      best_feasible = feasible;
-      best_violation = violation;
-      best_start = start;
-    }
+    if (best.offer(feasible, e.objective, violation)) run->best = e;
     if (*progress) {
       std::string where;
       for (std::size_t i = 0; i < e.x.size(); ++i) {
@@ -151,7 +160,6 @@ struct Search {
           feasible ? "limits hold" : fmt::format("limit exceeded by {:.3g} %", 100 * violation)));
     }
   }
-  int best_start = 0;
 };
 
 double objective(unsigned n, const double* u, double* grad, void* data) {
@@ -210,6 +218,118 @@ std::string run_nlopt(Search& search, const OptimiserSettings& settings, std::ve
   }
 }
 
+// The constraint limits the search aims at: inside each limit by the constraint tolerance,
+// so that the optimum it converges to (from either side) holds the limit itself, not only
+// within the tolerance.
+std::vector<double> aim_of(const TuningStudy& study, const std::vector<double>& limits) {
+  std::vector<double> aim = limits;
+  for (std::size_t i = 0; i < aim.size(); ++i) {
+    const double inset = study.optimiser.constraint_tolerance * aim[i];
+    aim[i] += study.constraints[i].is_upper ? -inset : inset;
+  }
+  return aim;
+}
+
+// Every start in unit coordinates: the given one, then seeded uniform points.
+std::vector<std::vector<double>> start_points(const TuningStudy& study,
+                                              const std::vector<double>& start) {
+  const std::size_t n = study.design.size();
+  std::mt19937_64 random(study.optimiser.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::vector<double>> points;
+  for (int s = 0; s < study.optimiser.starts; ++s) {
+    std::vector<double> u(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      u[i] = s == 0 ? std::clamp(to_unit(study.design[i], start[i]), 0.0, 1.0) : unit(random);
+    }
+    points.push_back(std::move(u));
+  }
+  return points;
+}
+
+// One start's search: its evaluations, its best point and NLopt's result.
+OptimisationRun search_from(TuningProblem& problem, FrictionVariant variant,
+                            const std::vector<double>& aim, std::vector<double> u, int start,
+                            const ProgressSink& progress) {
+  OptimisationRun run;
+  run.variant = variant;
+  Search search;
+  search.problem = &problem;
+  search.variant = variant;
+  search.limits = &aim;
+  search.progress = &progress;
+  search.run = &run;
+  search.start = start;
+  run.nlopt_result = run_nlopt(search, problem.study().optimiser, std::move(u));
+  return run;
+}
+
+// The starts' searches as one run: every evaluation in start order, and the best point of all
+// (feasible before infeasible, then the lower objective or violation; the earliest of equals).
+OptimisationRun combine_starts(const TuningProblem& problem, FrictionVariant variant,
+                               const std::vector<double>& limits, const std::vector<double>& aim,
+                               const std::vector<OptimisationRun>& starts) {
+  OptimisationRun run;
+  run.variant = variant;
+  run.limits = limits;
+  BestPoint best;
+  std::size_t best_start = 0;
+  for (std::size_t s = 0; s < starts.size(); ++s) {
+    const OptimisationRun& r = starts[s];
+    run.evaluations += r.evaluations;
+    run.computed += r.computed;
+    run.history.insert(run.history.end(), r.history.begin(), r.history.end());
+    if (r.evaluations == 0) continue;
+    if (best.offer(problem.feasible(r.best, aim), r.best.objective,
+                   problem.max_violation(r.best, aim))) {
+      run.best = r.best;
+      best_start = s;
+    }
+  }
+  run.nlopt_result = starts.at(best_start).nlopt_result;
+  return run;
+}
+
+// The reported optimum, evaluated again at the verification accuracy; where the search's
+// optimum sits on a limit that the search accuracy placed slightly differently, polished with
+// COBYLA at the verification accuracy, in small steps from where the search ended.
+OptimisationRun verify(TuningProblem& problem, OptimisationRun run, const std::vector<double>& aim,
+                       const ProgressSink& progress) {
+  const TuningStudy& study = problem.study();
+  const auto n = static_cast<unsigned>(study.design.size());
+  run.verified = problem.evaluate(run.variant, Accuracy::kVerify, run.best.x);
+  run.feasible = problem.feasible(run.verified, run.limits);
+  const bool best_feasible = problem.feasible(run.best, aim);
+  if (!run.feasible && (best_feasible || problem.max_violation(run.best, aim) < 0.01)) {
+    OptimiserSettings polish = study.optimiser;
+    polish.algorithm = Algorithm::kCobyla;
+    polish.initial_step = std::max(10.0 * polish.x_tolerance, 1e-3);
+    polish.max_evaluations = 60;
+    Search refine;
+    refine.problem = &problem;
+    refine.variant = run.variant;
+    refine.limits = &aim;
+    refine.progress = &progress;
+    refine.run = &run;
+    refine.accuracy = Accuracy::kVerify;
+    refine.start = study.optimiser.starts - 1;
+    const Evaluation searched = run.best;
+    std::vector<double> u(n);
+    for (unsigned i = 0; i < n; ++i)
+      u[i] = std::clamp(to_unit(study.design[i], searched.x[i]), 0.0, 1.0);
+    const std::string result = run_nlopt(refine, polish, u);
+    if (refine.best.feasible) {
+      run.verified = run.best;  // evaluated at the verification accuracy already
+      run.nlopt_result += ", polished: " + result;
+    } else {
+      run.best = searched;
+    }
+    run.feasible = problem.feasible(run.verified, run.limits);
+  }
+  run.margins = problem.margins(run.verified, run.limits);
+  return run;
+}
+
 }  // namespace
 
 std::vector<double> study_start(const TuningStudy& study) {
@@ -218,70 +338,53 @@ std::vector<double> study_start(const TuningStudy& study) {
   return start;
 }
 
+std::vector<OptimisationRun> optimise_all(TuningProblem& problem,
+                                          const std::vector<OptimisationRequest>& requests,
+                                          SearchRunner& runner) {
+  const TuningStudy& study = problem.study();
+  // Searches on several threads report one line at a time.
+  auto lock = std::make_shared<std::mutex>();
+  std::vector<ProgressSink> sinks;
+  std::vector<std::vector<double>> aims;
+  std::vector<SearchTask> searches;
+  for (std::size_t r = 0; r < requests.size(); ++r) {
+    const ProgressSink& progress = requests[r].progress;
+    sinks.push_back(progress ? ProgressSink([lock, progress](const std::string& line) {
+      const std::lock_guard<std::mutex> guard(*lock);
+      progress(line);
+    })
+                             : ProgressSink());
+    aims.push_back(aim_of(study, requests[r].limits));
+    const auto points = start_points(study, requests[r].start);
+    for (std::size_t s = 0; s < points.size(); ++s) {
+      searches.push_back([&, r, s, u = points[s]](TuningProblem& branch) {
+        return search_from(branch, requests[r].variant, aims[r], u, static_cast<int>(s), sinks[r]);
+      });
+    }
+  }
+  const std::vector<OptimisationRun> searched = runner.run(problem, searches);
+  std::vector<OptimisationRun> combined;
+  const auto starts = static_cast<std::size_t>(study.optimiser.starts);
+  for (std::size_t r = 0; r < requests.size(); ++r) {
+    const std::vector<OptimisationRun> own(
+        searched.begin() + static_cast<std::ptrdiff_t>(r * starts),
+        searched.begin() + static_cast<std::ptrdiff_t>((r + 1) * starts));
+    combined.push_back(
+        combine_starts(problem, requests[r].variant, requests[r].limits, aims[r], own));
+  }
+  std::vector<SearchTask> verifications;
+  for (std::size_t r = 0; r < requests.size(); ++r) {
+    verifications.push_back(
+        [&, r](TuningProblem& branch) { return verify(branch, combined[r], aims[r], sinks[r]); });
+  }
+  return runner.run(problem, verifications);
+}
+
 OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
                          const std::vector<double>& limits, const std::vector<double>& start,
                          const ProgressSink& progress) {
-  const TuningStudy& study = problem.study();
-  const auto n = static_cast<unsigned>(study.design.size());
-  OptimisationRun run;
-  run.variant = variant;
-  run.limits = limits;
-  // The search aims inside each limit by the constraint tolerance, so that the optimum it
-  // converges to (from either side) holds the limit itself, not only within the tolerance.
-  std::vector<double> aim = limits;
-  for (std::size_t i = 0; i < aim.size(); ++i) {
-    const double inset = study.optimiser.constraint_tolerance * aim[i];
-    aim[i] += study.constraints[i].is_upper ? -inset : inset;
-  }
-  Search search;
-  search.problem = &problem;
-  search.variant = variant;
-  search.limits = &aim;
-  search.progress = &progress;
-  search.run = &run;
-  std::mt19937_64 random(study.optimiser.seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<std::string> results;
-  for (int s = 0; s < study.optimiser.starts; ++s) {
-    std::vector<double> u(n);
-    for (unsigned i = 0; i < n; ++i) {
-      u[i] = s == 0 ? std::clamp(to_unit(study.design[i], start[i]), 0.0, 1.0) : unit(random);
-    }
-    search.start = s;
-    results.push_back(run_nlopt(search, study.optimiser, u));
-  }
-  run.nlopt_result = results[static_cast<std::size_t>(search.best_start)];
-  // The reported optimum, evaluated again at the verification accuracy.
-  run.verified = problem.evaluate(variant, Accuracy::kVerify, run.best.x);
-  run.feasible = problem.feasible(run.verified, limits);
-  if (!run.feasible && (search.best_feasible || search.best_violation < 0.01)) {
-    // The optimum sits on a limit that the search accuracy placed slightly differently: polish
-    // it with COBYLA at the verification accuracy, in small steps from where the search ended.
-    OptimiserSettings polish = study.optimiser;
-    polish.algorithm = Algorithm::kCobyla;
-    polish.initial_step = std::max(10.0 * polish.x_tolerance, 1e-3);
-    polish.max_evaluations = 60;
-    Search refine = search;
-    refine.accuracy = Accuracy::kVerify;
-    refine.has_best = false;
-    refine.best_feasible = false;
-    refine.best_violation = std::numeric_limits<double>::infinity();
-    refine.last_u.clear();
-    const Evaluation searched = run.best;
-    std::vector<double> u(n);
-    for (unsigned i = 0; i < n; ++i)
-      u[i] = std::clamp(to_unit(study.design[i], searched.x[i]), 0.0, 1.0);
-    const std::string result = run_nlopt(refine, polish, u);
-    if (refine.best_feasible) {
-      run.verified = run.best;  // evaluated at the verification accuracy already
-      run.nlopt_result += ", polished: " + result;
-    } else {
-      run.best = searched;
-    }
-    run.feasible = problem.feasible(run.verified, limits);
-  }
-  run.margins = problem.margins(run.verified, limits);
-  return run;
+  LocalSearchRunner runner(problem.study().evaluation.threads);
+  return optimise_all(problem, {{variant, limits, start, progress}}, runner).front();
 }
 
 }  // namespace ridefit::optimisation

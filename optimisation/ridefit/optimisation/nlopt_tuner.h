@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "ridefit/optimisation/search_runner.h"
 #include "ridefit/optimisation/tuning_problem.h"
 
 namespace ridefit::optimisation {
@@ -34,15 +35,32 @@ struct OptimisationRun {
 // Progress lines for stderr ("eval 12 (start 1): objective 0.3181, limits hold").
 using ProgressSink = std::function<void(const std::string&)>;
 
-// Minimises the study's objective under its constraints (`limits` replace the study's) with
-// the study's NLopt algorithm, in coordinates scaled to [0, 1] per variable (log-scaled ones in
-// ln x), from `start` (physical units) and, for more starts, from seeded uniform points.
-// Derivative-free throughout: COBYLA (constraints natively), BOBYQA (inside AUGLAG when
-// constrained), ISRES (constraints natively), DIRECT-L (inside AUGLAG when constrained), MLSL-LDS
-// with BOBYQA as the local method (inside AUGLAG when constrained). The search is deterministic
-// (NLopt's generator and the starts are seeded), which is what lets a resumed run replay its path
-// from the journal. RunError when an evaluation fails (the message names the design and the load
-// case).
+// What one optimisation is asked: the model variant, the constraint limits (they replace the
+// study's) and the first start (physical units).
+struct OptimisationRequest {
+  FrictionVariant variant = FrictionVariant::kStudy;
+  std::vector<double> limits;
+  std::vector<double> start;
+  ProgressSink progress;
+};
+
+// Minimises the study's objective under its constraints with the study's NLopt algorithm, in
+// coordinates scaled to [0, 1] per variable (log-scaled ones in ln x), from the request's start
+// and, for more starts, from seeded uniform points. Derivative-free throughout: COBYLA
+// (constraints natively), BOBYQA (inside AUGLAG when constrained), ISRES (constraints
+// natively), DIRECT-L (inside AUGLAG when constrained), MLSL-LDS with BOBYQA as the local method
+// (inside AUGLAG when constrained). The search is deterministic (NLopt's generator and the starts
+// are seeded), which is what lets a resumed run replay its path from the journal.
+//
+// Every start of every request is an independent search; `runner` spreads them (threads, or
+// ranks), then the best of each request's starts (the first of equals, in start order) is
+// verified and, where a limit needs it, polished, again spread. So the runs do not depend on the
+// runner. RunError when an evaluation fails (the message names the design and the load case).
+std::vector<OptimisationRun> optimise_all(TuningProblem& problem,
+                                          const std::vector<OptimisationRequest>& requests,
+                                          SearchRunner& runner);
+
+// One optimisation on the threads of the study's evaluation settings.
 OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
                          const std::vector<double>& limits, const std::vector<double>& start,
                          const ProgressSink& progress = {});

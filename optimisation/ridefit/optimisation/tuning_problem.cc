@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "ridefit/common/errors.h"
 #include "ridefit/common/parallel_for.h"
@@ -24,19 +25,75 @@ TuningStudy checked(TuningStudy study) {
   return study;
 }
 
+// The study's road per load case, generated once for all evaluations.
+std::vector<LoadCaseRoad> prepare_roads(const TuningStudy& study) {
+  std::vector<LoadCaseRoad> roads(study.load_cases.size());
+  common::parallel_for(roads.size(), study.evaluation.threads,
+                       [&](std::size_t c) { roads[c] = prepare_load_case_road(study, c); });
+  return roads;
+}
+
+std::string memory_key(const std::string& variant, std::span<const double> x) {
+  std::string key = variant;
+  for (double v : x) key += fmt::format("|{:.17g}", v);
+  return key;
+}
+
 }  // namespace
 
 TuningProblem::TuningProblem(TuningStudy study, EvaluationJournal* journal)
-    : study_(checked(std::move(study))),
-      base_(load_base_model(study_, fmt::format("{}: set", study_.study_file.string()))),
-      journal_(journal) {
-  roads_.resize(study_.load_cases.size());
-  common::parallel_for(roads_.size(), study_.evaluation.threads,
-                       [&](std::size_t c) { roads_[c] = prepare_load_case_road(study_, c); });
+    : journal_(nullptr), case_threads_(0) {
+  auto prepared = std::make_shared<Prepared>();
+  prepared->study = checked(std::move(study));
+  prepared->base =
+      load_base_model(prepared->study, fmt::format("{}: set", prepared->study.study_file.string()));
+  prepared->roads = prepare_roads(prepared->study);
+  case_threads_ = prepared->study.evaluation.threads;
+  prepared_ = std::move(prepared);
+  attach_journal(journal);
+}
+
+TuningProblem::TuningProblem(std::shared_ptr<const Prepared> prepared, EvaluationJournal* journal,
+                             std::map<std::string, Evaluation> memory, unsigned case_threads)
+    : prepared_(std::move(prepared)),
+      journal_(journal),
+      case_threads_(case_threads),
+      memory_(std::move(memory)) {}
+
+void TuningProblem::attach_journal(EvaluationJournal* journal) {
+  journal_ = journal;
+  if (journal_) learn(journal_->records());
+}
+
+void TuningProblem::learn(const std::vector<JournalRecord>& records) {
+  const std::size_t cases = study().load_cases.size();
+  for (const auto& r : records) {
+    if (r.case_values.size() != cases) {
+      throw InputError(
+          fmt::format("journal {}: an evaluation has {} load cases, the study {}",
+                      journal_ ? journal_->path().string() : std::string("(from rank 0)"),
+                      r.case_values.size(), cases));
+    }
+    const std::string key = memory_key(r.variant, r.x);
+    std::lock_guard lock(mutex_);
+    if (memory_.count(key) == 0) {
+      memory_[key] = finish(r.x, r.case_values, r.frequency_domain, true);
+    }
+  }
+}
+
+TuningProblem TuningProblem::branch(unsigned case_threads) const {
+  std::lock_guard lock(mutex_);
+  return TuningProblem(prepared_, journal_, memory_, case_threads);
+}
+
+std::vector<JournalRecord> TuningProblem::take_computed() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(computed_, {});
 }
 
 std::size_t TuningProblem::metric_index(const std::string& name) const {
-  const auto& names = metric_names(study_.kind);
+  const auto& names = metric_names(study().kind);
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
@@ -51,8 +108,8 @@ double TuningProblem::aggregate(const Evaluation& e, std::size_t metric, Aggrega
   }
   double sum = 0.0, weights = 0.0;
   for (std::size_t c = 0; c < e.case_values.size(); ++c) {
-    sum += study_.load_cases[c].weight * e.case_values[c][metric];
-    weights += study_.load_cases[c].weight;
+    sum += study().load_cases[c].weight * e.case_values[c][metric];
+    weights += study().load_cases[c].weight;
   }
   return sum / weights;
 }
@@ -66,8 +123,8 @@ Evaluation TuningProblem::finish(std::vector<double> x,
   e.frequency_domain = std::move(frequency_domain);
   e.reused = reused;
   e.objective =
-      aggregate(e, metric_index(study_.objective.metric), study_.objective.aggregate, true);
-  for (const auto& c : study_.constraints) {
+      aggregate(e, metric_index(study().objective.metric), study().objective.aggregate, true);
+  for (const auto& c : study().constraints) {
     e.constraint_values.push_back(aggregate(e, metric_index(c.metric), c.aggregate, c.is_upper));
   }
   return e;
@@ -76,45 +133,29 @@ Evaluation TuningProblem::finish(std::vector<double> x,
 Evaluation TuningProblem::evaluate(FrictionVariant variant, Accuracy accuracy,
                                    std::span<const double> x) {
   const std::string name = variant_name(variant, accuracy);
-  std::string key = name;
-  for (double v : x) key += fmt::format("|{:.17g}", v);
+  const std::string key = memory_key(name, x);
   {
     std::lock_guard lock(mutex_);
     if (const auto it = memory_.find(key); it != memory_.end()) {
-      ++reused_;
       Evaluation e = it->second;
       e.reused = true;
       return e;
     }
   }
-  if (journal_) {
-    if (auto record = journal_->find(name, x)) {
-      if (record->case_values.size() != study_.load_cases.size()) {
-        throw InputError(fmt::format("journal {}: an evaluation has {} load cases, the study {}",
-                                     journal_->path().string(), record->case_values.size(),
-                                     study_.load_cases.size()));
-      }
-      Evaluation e = finish(record->x, record->case_values, record->frequency_domain, true);
-      std::lock_guard lock(mutex_);
-      memory_[key] = e;
-      ++reused_;
-      return e;
-    }
-  }
-  const std::size_t cases = study_.load_cases.size();
+  const std::size_t cases = study().load_cases.size();
   std::vector<std::vector<double>> values(cases);
   std::vector<bool> frequency(cases);
   std::vector<LoadCaseMetrics> metrics(cases);
-  common::parallel_for(cases, study_.evaluation.threads, [&](std::size_t c) {
-    std::string origin =
-        fmt::format("{}: load case '{}' at", study_.study_file.string(), study_.load_cases[c].name);
+  common::parallel_for(cases, case_threads_, [&](std::size_t c) {
+    std::string origin = fmt::format("{}: load case '{}' at", study().study_file.string(),
+                                     study().load_cases[c].name);
     for (std::size_t v = 0; v < x.size(); ++v) {
-      origin += fmt::format(" {}={:g}", study_.design[v].name, x[v]);
+      origin += fmt::format(" {}={:g}", study().design[v].name, x[v]);
     }
     const TuningModel model =
-        edit_tuning_model(base_, study_, variant, study_.load_cases[c], x, origin);
+        edit_tuning_model(prepared_->base, study(), variant, study().load_cases[c], x, origin);
     try {
-      metrics[c] = evaluate_load_case(study_, model, roads_[c], accuracy,
+      metrics[c] = evaluate_load_case(study(), model, prepared_->roads[c], accuracy,
                                       variant == FrictionVariant::kStudy);
     } catch (const RunError& e) {
       throw RunError(fmt::format("{}: {}", origin, e.what()));
@@ -127,16 +168,17 @@ Evaluation TuningProblem::evaluate(FrictionVariant variant, Accuracy accuracy,
     frequency[c] = metrics[c].frequency_domain;
   }
   Evaluation e = finish(std::vector<double>(x.begin(), x.end()), values, frequency, false);
-  if (journal_) journal_->append({name, e.x, e.case_values, e.frequency_domain});
+  const JournalRecord record{name, e.x, e.case_values, e.frequency_domain};
+  if (journal_) journal_->append(record);
   std::lock_guard lock(mutex_);
   memory_[key] = e;
-  ++computed_;
+  computed_.push_back(record);
   return e;
 }
 
 std::vector<double> TuningProblem::study_limits() const {
   std::vector<double> limits;
-  for (const auto& c : study_.constraints) limits.push_back(c.limit);
+  for (const auto& c : study().constraints) limits.push_back(c.limit);
   return limits;
 }
 
@@ -144,26 +186,26 @@ double TuningProblem::normalised_constraint(const Evaluation& e, std::size_t i,
                                             std::span<const double> limits) const {
   const double value = e.constraint_values[i];
   const double limit = limits[i];
-  return study_.constraints[i].is_upper ? (value - limit) / limit : (limit - value) / limit;
+  return study().constraints[i].is_upper ? (value - limit) / limit : (limit - value) / limit;
 }
 
 double TuningProblem::max_violation(const Evaluation& e, std::span<const double> limits) const {
   double worst = 0.0;
-  for (std::size_t i = 0; i < study_.constraints.size(); ++i) {
+  for (std::size_t i = 0; i < study().constraints.size(); ++i) {
     worst = std::max(worst, normalised_constraint(e, i, limits));
   }
   return worst;
 }
 
 bool TuningProblem::feasible(const Evaluation& e, std::span<const double> limits) const {
-  return max_violation(e, limits) <= study_.optimiser.constraint_tolerance;
+  return max_violation(e, limits) <= study().optimiser.constraint_tolerance;
 }
 
 std::vector<ConstraintMargin> TuningProblem::margins(const Evaluation& e,
                                                      std::span<const double> limits) const {
   std::vector<ConstraintMargin> out;
-  for (std::size_t i = 0; i < study_.constraints.size(); ++i) {
-    Constraint c = study_.constraints[i];
+  for (std::size_t i = 0; i < study().constraints.size(); ++i) {
+    Constraint c = study().constraints[i];
     c.limit = limits[i];
     ConstraintMargin m;
     m.description = c.describe();
@@ -171,7 +213,7 @@ std::vector<ConstraintMargin> TuningProblem::margins(const Evaluation& e,
     m.value = e.constraint_values[i];
     m.margin = c.is_upper ? c.limit - m.value : m.value - c.limit;
     m.relative_margin = m.margin / c.limit;
-    m.holds = m.relative_margin >= -study_.optimiser.constraint_tolerance;  // within tolerance
+    m.holds = m.relative_margin >= -study().optimiser.constraint_tolerance;  // within tolerance
     out.push_back(m);
   }
   return out;

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <atomic>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <span>
 #include <string>
@@ -37,14 +37,27 @@ struct ConstraintMargin {
 };
 
 // The study made ready to evaluate: each load case's road generated once (common random
-// numbers), evaluations cached in memory and in the journal, load cases run in parallel.
+// numbers), evaluations cached in memory, load cases run in parallel. Independent searches run
+// on branches (branch()): each sees the evaluations known when it was made and keeps its own
+// new ones, so what a search finds, and what it counts as reused, does not depend on which
+// other searches run beside it, on which thread or on which rank.
 class TuningProblem {
  public:
   explicit TuningProblem(TuningStudy study, EvaluationJournal* journal = nullptr);
 
-  const TuningStudy& study() const { return study_; }
-  // Evaluations from now on are looked up in and appended to `journal` (may be null).
-  void attach_journal(EvaluationJournal* journal) { journal_ = journal; }
+  const TuningStudy& study() const { return prepared_->study; }
+  // The journal's evaluations become known (reused, not recomputed), and every evaluation
+  // computed from now on, here or in a branch, is appended to it (may be null).
+  void attach_journal(EvaluationJournal* journal);
+  // Evaluations known from elsewhere (a journal read on another rank, a branch's results) are
+  // reused, not recomputed; the first of one design is kept. Not thread-safe with evaluate().
+  void learn(const std::vector<JournalRecord>& records);
+
+  // A problem sharing the study, the model and the roads, knowing what this one knows now,
+  // appending to the same journal, with load cases on `case_threads` threads (0: every core).
+  TuningProblem branch(unsigned case_threads) const;
+  // The evaluations this problem computed (not reused) since the last call, in order.
+  std::vector<JournalRecord> take_computed();
 
   // Thread-safe (two concurrent calls for one new design may both compute it). A design
   // already evaluated, in this run or in the journal, is not recomputed. An InputError or
@@ -64,20 +77,26 @@ class TuningProblem {
   double aggregate(const Evaluation& e, std::size_t metric, Aggregate how, bool upper) const;
   std::size_t metric_index(const std::string& name) const;
 
-  std::size_t computed_evaluations() const { return computed_; }
-  std::size_t reused_evaluations() const { return reused_; }
-
- private:
+  // Evaluation `e` completed from a record's case values (objective, constraints).
   Evaluation finish(std::vector<double> x, std::vector<std::vector<double>> case_values,
                     std::vector<bool> frequency_domain, bool reused) const;
 
-  TuningStudy study_;
-  TuningModel base_;  // the study's model, read once; evaluations edit copies in memory
+ private:
+  // What every branch shares and none changes.
+  struct Prepared {
+    TuningStudy study;
+    TuningModel base;  // the study's model, read once; evaluations edit copies in memory
+    std::vector<LoadCaseRoad> roads;
+  };
+  TuningProblem(std::shared_ptr<const Prepared> prepared, EvaluationJournal* journal,
+                std::map<std::string, Evaluation> memory, unsigned case_threads);
+
+  std::shared_ptr<const Prepared> prepared_;
   EvaluationJournal* journal_;
-  std::vector<LoadCaseRoad> roads_;
+  unsigned case_threads_;
   std::map<std::string, Evaluation> memory_;
-  std::mutex mutex_;
-  std::atomic<std::size_t> computed_{0}, reused_{0};
+  std::vector<JournalRecord> computed_;
+  mutable std::mutex mutex_;
 };
 
 // "study/search", "blind/verify", …: the journal's name for a variant and an accuracy.
