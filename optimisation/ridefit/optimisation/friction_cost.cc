@@ -5,9 +5,13 @@
 namespace ridefit::optimisation {
 
 OptimisationRequest friction_blind_request(const TuningProblem& problem,
-                                           const OptimisationRun& aware,
+                                           const std::vector<double>& limits,
                                            const ProgressSink& progress) {
-  return {FrictionVariant::kBlind, aware.limits, study_start(problem.study()), progress};
+  return {FrictionVariant::kBlind, limits, study_start(problem.study()), progress,
+          // The blind optimum with friction, at the verification accuracy: friction_cost_of's.
+          [](TuningProblem& branch, const OptimisationRun& blind) {
+            branch.evaluate(FrictionVariant::kStudy, Accuracy::kVerify, blind.best.x);
+          }};
 }
 
 FrictionCost friction_cost_of(TuningProblem& problem, const OptimisationRun& aware,
@@ -28,7 +32,8 @@ FrictionCost friction_cost(TuningProblem& problem, const OptimisationRun& aware,
   LocalSearchRunner runner(problem.study().evaluation.threads);
   return friction_cost_of(
       problem, aware,
-      optimise_all(problem, {friction_blind_request(problem, aware, progress)}, runner).front());
+      optimise_all(problem, {friction_blind_request(problem, aware.limits, progress)}, runner)
+          .front());
 }
 
 }  // namespace ridefit::optimisation

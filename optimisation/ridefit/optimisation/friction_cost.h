@@ -18,9 +18,10 @@ struct FrictionCost {
   double comfort_loss_percent = 0.0;  // of the aware objective
 };
 
-// The blind optimisation: the aware run's limits, from the study's start.
+// The blind optimisation under `limits` (the aware run's), from the study's start; it does
+// not depend on the aware optimum, so it can run beside it.
 OptimisationRequest friction_blind_request(const TuningProblem& problem,
-                                           const OptimisationRun& aware,
+                                           const std::vector<double>& limits,
                                            const ProgressSink& progress = {});
 // The cost from the blind run (friction_blind_request's, optimised).
 FrictionCost friction_cost_of(TuningProblem& problem, const OptimisationRun& aware,

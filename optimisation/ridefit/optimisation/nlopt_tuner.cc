@@ -374,8 +374,11 @@ std::vector<OptimisationRun> optimise_all(TuningProblem& problem,
   }
   std::vector<SearchTask> verifications;
   for (std::size_t r = 0; r < requests.size(); ++r) {
-    verifications.push_back(
-        [&, r](TuningProblem& branch) { return verify(branch, combined[r], aims[r], sinks[r]); });
+    verifications.push_back([&, r](TuningProblem& branch) {
+      OptimisationRun run = verify(branch, combined[r], aims[r], sinks[r]);
+      if (requests[r].follow_up) requests[r].follow_up(branch, run);
+      return run;
+    });
   }
   return runner.run(problem, verifications);
 }
@@ -384,7 +387,7 @@ OptimisationRun optimise(TuningProblem& problem, FrictionVariant variant,
                          const std::vector<double>& limits, const std::vector<double>& start,
                          const ProgressSink& progress) {
   LocalSearchRunner runner(problem.study().evaluation.threads);
-  return optimise_all(problem, {{variant, limits, start, progress}}, runner).front();
+  return optimise_all(problem, {{variant, limits, start, progress, {}}}, runner).front();
 }
 
 }  // namespace ridefit::optimisation

@@ -42,6 +42,9 @@ struct OptimisationRequest {
   std::vector<double> limits;
   std::vector<double> start;
   ProgressSink progress;
+  // Evaluations to make at the verified optimum, beside the verification (their results are
+  // then known to the problem): what the caller will ask next, computed in parallel.
+  std::function<void(TuningProblem& branch, const OptimisationRun& run)> follow_up;
 };
 
 // Minimises the study's objective under its constraints with the study's NLopt algorithm, in

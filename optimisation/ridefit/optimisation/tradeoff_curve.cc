@@ -14,7 +14,7 @@ std::vector<OptimisationRequest> tradeoff_requests(const TuningProblem& problem,
   for (double limit : study.tradeoff->limits) {
     std::vector<double> all = problem.study_limits();
     all[study.tradeoff->constraint] = limit;
-    requests.push_back({FrictionVariant::kStudy, all, start, progress});
+    requests.push_back({FrictionVariant::kStudy, all, start, progress, {}});
   }
   return requests;
 }

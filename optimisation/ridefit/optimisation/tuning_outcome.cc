@@ -18,35 +18,28 @@ TuningOutcome run_tuning_study(TuningProblem& problem, const StageProgress& prog
   SearchRunner& searches = runner ? *runner : local;
   const TuningStudy& study = problem.study();
   TuningOutcome outcome;
-  outcome.aware = optimise_all(problem,
-                               {{FrictionVariant::kStudy, problem.study_limits(),
-                                 study_start(study), stage_sink(progress, "")}},
-                               searches)
-                      .front();
-  // The comparisons need an optimum to compare with and to start from; they are independent
-  // of each other, so their searches run together.
-  if (!outcome.aware.feasible) return outcome;
-  std::vector<OptimisationRequest> requests;
+  // The friction-blind optimisation does not depend on the aware optimum: it runs beside it,
+  // and is dropped when there is no feasible optimum to compare it with.
+  std::vector<OptimisationRequest> requests = {{FrictionVariant::kStudy,
+                                                problem.study_limits(),
+                                                study_start(study),
+                                                stage_sink(progress, ""),
+                                                {}}};
   if (study.friction_cost) {
-    requests.push_back(
-        friction_blind_request(problem, outcome.aware, stage_sink(progress, "friction-blind")));
+    requests.push_back(friction_blind_request(problem, problem.study_limits(),
+                                              stage_sink(progress, "friction-blind")));
   }
+  std::vector<OptimisationRun> runs = optimise_all(problem, requests, searches);
+  outcome.aware = std::move(runs.front());
+  if (!outcome.aware.feasible) return outcome;
+  if (study.friction_cost) {
+    outcome.friction = friction_cost_of(problem, outcome.aware, std::move(runs[1]));
+  }
+  // The trade-off points start from the optimum.
   if (study.tradeoff) {
     const auto points =
         tradeoff_requests(problem, outcome.aware.best.x, stage_sink(progress, "trade-off"));
-    requests.insert(requests.end(), points.begin(), points.end());
-  }
-  if (requests.empty()) return outcome;
-  std::vector<OptimisationRun> runs = optimise_all(problem, requests, searches);
-  auto next = runs.begin();
-  if (study.friction_cost) {
-    outcome.friction = friction_cost_of(problem, outcome.aware, std::move(*next));
-    ++next;
-  }
-  if (study.tradeoff) {
-    outcome.tradeoff =
-        tradeoff_front(problem, std::vector<OptimisationRun>(std::make_move_iterator(next),
-                                                             std::make_move_iterator(runs.end())));
+    outcome.tradeoff = tradeoff_front(problem, optimise_all(problem, points, searches));
   }
   return outcome;
 }

@@ -24,9 +24,10 @@ struct TuningOutcome {
 // "trade-off" for the comparisons.
 using StageProgress = std::function<void(const std::string& stage, const std::string& line)>;
 
-// Runs the study: the optimum, then the friction-blind optimum and the trade-off curve where the
-// study asks for them, side by side. `runner` spreads the searches (default: the threads of the
-// study's evaluation settings); the outcome does not depend on it. Errors as optimise().
+// Runs the study: the optimum and, where the study asks for them, the friction-blind optimum
+// (beside it) and then the trade-off curve (its points side by side). `runner` spreads the searches
+// (default: the threads of the study's evaluation settings); the outcome does not depend on it.
+// Errors as optimise().
 TuningOutcome run_tuning_study(TuningProblem& problem, const StageProgress& progress = {},
                                SearchRunner* runner = nullptr);
 
