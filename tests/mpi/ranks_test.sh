@@ -5,35 +5,7 @@
 # timeout. Skipped (exit 77) in a build without MPI.
 # usage: ranks_test.sh RIDEFIT SOURCE_DIR MPI(ON|OFF) MPIEXEC
 set -uo pipefail
-ridefit=$1
-src=$2
-if [ "$3" != "ON" ] || [ -z "${4:-}" ]; then
-  echo "ranks_test: skipped: ridefit was built without MPI (RIDEFIT_WITH_MPI=OFF, or Open MPI" \
-    "not found: apt install libopenmpi-dev openmpi-bin)"
-  exit 77
-fi
-mpiexec=$4
-# Root in containers and CI; no cross-memory attach there either.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl_vader_single_copy_mechanism=none
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail() {
-  echo "ranks_test: $*" >&2
-  exit 1
-}
-# Under tools/test --sanitize, Open MPI's own allocations outlive MPI_Finalize and LeakSanitizer
-# would report them for every rank (none is ridefit's): the ranks run without leak detection,
-# with ASan's other checks and UBSan still on. The one-process runs keep it.
-mpi_env=()
-if [ -n "${ASAN_OPTIONS:-}" ]; then
-  mpi_env=(env "ASAN_OPTIONS=$ASAN_OPTIONS:detect_leaks=0")
-fi
-ranks() {  # ranks N [mpirun options] -- ridefit arguments
-  local n=$1
-  shift
-  timeout 120 "${mpi_env[@]}" "$mpiexec" -np "$n" "$@"
-}
+. "$(dirname "$0")/mpi_test_common.sh" ranks_test "$@"
 
 cat >"$tmp/frequency.yaml" <<YAML
 model: $src/datasets/vehicles/ajayi_half_car.yaml
