@@ -6,11 +6,8 @@
 # rank ends the job. Every mpirun has a timeout. Skipped (exit 77) in a build without MPI.
 # usage: optimise_ranks_test.sh RIDEFIT SOURCE_DIR MPI(ON|OFF) MPIEXEC
 set -uo pipefail
-ridefit=$1
-src=$2
-test_name=optimise_ranks_test
 rank_timeout=300
-source "$(dirname "$0")/mpi_test_lib.sh"
+. "$(dirname "$0")/mpi_test_common.sh" optimise_ranks_test "$@"
 
 # The result without what may differ: the wall time, and (after a resume) how many
 # evaluations came from the journal.

@@ -5,10 +5,7 @@
 # timeout. Skipped (exit 77) in a build without MPI.
 # usage: ranks_test.sh RIDEFIT SOURCE_DIR MPI(ON|OFF) MPIEXEC
 set -uo pipefail
-ridefit=$1
-src=$2
-test_name=ranks_test
-source "$(dirname "$0")/mpi_test_lib.sh"
+. "$(dirname "$0")/mpi_test_common.sh" ranks_test "$@"
 
 cat >"$tmp/frequency.yaml" <<YAML
 model: $src/datasets/vehicles/ajayi_half_car.yaml

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -126,6 +127,33 @@ void check_output_rate(double rate_Hz, double duration_s) {
   } catch (const InputError& e) {
     throw InputError(fmt::format("--rate {}", e.what()));
   }
+}
+
+void add_force_flag(CLI::App& command, bool& force) {
+  command.add_flag("--force", force,
+                   "Write into an existing -o folder that holds files ridefit did not write "
+                   "there (files of the same name are replaced; inputs never are)");
+}
+
+void parse_arguments(CLI::App& command, std::vector<std::string> arguments) {
+  for (const auto& argument : arguments) {
+    if (argument.rfind("--", 0) != 0 || command.get_option_no_throw(argument) != nullptr) continue;
+    std::string known;
+    for (const CLI::Option* option : command.get_options()) {
+      for (std::string name : option->get_lnames()) {
+        if (name == "help") continue;
+        std::replace(name.begin(), name.end(), '-', '_');
+        if (!known.empty()) known += ", ";
+        known += name;
+      }
+    }
+    std::string name = argument.substr(2);
+    std::replace(name.begin(), name.end(), '-', '_');
+    throw InputError(fmt::format(
+        "key 'options.{}': not an option of this command (its options: {})", name, known));
+  }
+  std::reverse(arguments.begin(), arguments.end());  // CLI11 takes them last first
+  command.parse(arguments);
 }
 
 std::vector<std::pair<std::string, std::string>> parse_key_values(

@@ -60,6 +60,14 @@ class ProgressReporter {
 // simulate::check_output_rate with its InputError naming --rate.
 void check_output_rate(double rate_Hz, double duration_s);
 
+// --force of a command that writes an output folder (io::RunOutputs::add_folder).
+void add_force_flag(CLI::App& command, bool& force);
+
+// Parses `arguments` (in command-line order, without the program and command names) with
+// `command`'s options, as `ridefit batch` does for a job's: InputError naming an option the
+// command does not have (as the job file's key, options.NAME), CLI::ParseError when one is wrong.
+void parse_arguments(CLI::App& command, std::vector<std::string> arguments);
+
 // `--set key=value` entries as (key, value text); a malformed entry is an InputError.
 std::vector<std::pair<std::string, std::string>> parse_key_values(
     const std::vector<std::string>& entries);

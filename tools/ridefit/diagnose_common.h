@@ -4,8 +4,11 @@
 // diagnose_command.cc, strut rig loops in diagnose_loops_command.cc): the flags, their checks,
 // and the output folder (diagnose_common.cc).
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -60,7 +63,18 @@ struct DiagnosisFolder {
 void write_diagnosis_folder(const DiagnoseFlags& flags, const std::vector<std::string>& files,
                             const DiagnosisFolder& folder);
 
-// The diagnosis of strut rig records (diagnose_loops_command.cc).
-void run_diagnose_loops(const DiagnoseFlags& flags);
+// A diagnosis done, nothing written yet: its folder, what --json prints (without the paths of
+// the files) and the lines printed without --json.
+struct DiagnosisOutput {
+  DiagnosisFolder folder;
+  nlohmann::json summary;
+  std::string text;
+};
+
+// The diagnosis of strut rig records (diagnose_loops_command.cc), with the figure when `figure`;
+// `check_outputs` is called once the flags are checked, before any file is read (the command's
+// check_output_folder). Progress on stderr unless --quiet or --json.
+DiagnosisOutput diagnose_loops(const DiagnoseFlags& flags, bool figure,
+                               const std::function<void()>& check_outputs);
 
 }  // namespace ridefit::cli

@@ -18,15 +18,14 @@
 #include "ridefit/fitting/diagnose/loop_report.h"
 #include "ridefit/fitting/diagnose/model_changes.h"
 #include "ridefit/fitting/strut_parameters.h"
-#include "ridefit/io/atomic_file.h"
-#include "ridefit/io/gnuplot_figure.h"
 #include "ridefit/io/quarter_car_file.h"
 
 namespace ridefit::cli {
 
 namespace dx = fitting::diagnose;
 
-void run_diagnose_loops(const DiagnoseFlags& flags) {
+DiagnosisOutput diagnose_loops(const DiagnoseFlags& flags, bool figure,
+                               const std::function<void()>& check_outputs) {
   if (!flags.excitations.empty()) {
     throw InputError(
         "--excitation: strut rig records carry their own excitation (the displacement column); "
@@ -43,9 +42,8 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
   }
   options.baseline_free = flags.free;
   options.selection.threads = flags.threads;
+  check_outputs();
 
-  const std::vector<std::string> files = check_output_folder(flags, "loops.png");
-  const std::filesystem::path dir = flags.output_dir;
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::HysteresisRecord> records;
   for (const auto& file : flags.records) records.push_back(fitting::load_hysteresis_record(file));
@@ -59,8 +57,6 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
       }
     }
   }
-  const bool figure = io::gnuplot_available();
-  io::prepare_output_directory(dir, "-o");
 
   dx::DiagnosisModel baseline;
   baseline.car = model_file.make_model();
@@ -71,7 +67,8 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
         if (!flags.quiet && !flags.json) std::cerr << "diagnose: " << line << "\n";
       });
 
-  DiagnosisFolder folder;
+  DiagnosisOutput output;
+  DiagnosisFolder& folder = output.folder;
   std::ostringstream report;
   dx::write_loop_report(report, flags.model_file, result, data, figure ? "loops.png" : "");
   folder.report = report.str();
@@ -84,18 +81,10 @@ void run_diagnose_loops(const DiagnoseFlags& flags) {
       changes.rig_only.empty() ? "" : "\n# rig only (not model keys): " + changes.rig_only);
   if (figure) folder.figure = dx::loop_figure(result, data);
   folder.figure_file = "loops.png";
-  write_diagnosis_folder(flags, files, folder);
-
-  if (flags.json) {
-    nlohmann::json j = dx::loop_summary_json(result);
-    j["report"] = (dir / "report.md").string();
-    j["model"] = (dir / "model.yaml").string();
-    std::cout << j.dump(2) << "\n";
-    return;
-  }
-  std::cout << fmt::format("{}\ngap (force NRMSE) {:.2f} % before, {:.2f} % after\n",
-                           result.verdict, result.gap_before, result.gap_after);
-  std::cout << "Report: " << (dir / "report.md").string() << "\n";
+  output.summary = dx::loop_summary_json(result);
+  output.text = fmt::format("{}\ngap (force NRMSE) {:.2f} % before, {:.2f} % after\n",
+                            result.verdict, result.gap_before, result.gap_after);
+  return output;
 }
 
 }  // namespace ridefit::cli

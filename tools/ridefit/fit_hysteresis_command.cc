@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "command_options.h"
+#include "command_outcome.h"
 #include "fit_command.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_convergence.h"
@@ -20,6 +21,7 @@
 #include "ridefit/fitting/rig_figure.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
+#include "ridefit/io/atomic_file.h"
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
@@ -106,6 +108,65 @@ void check_flag_combinations(const FitHysteresisFlags& flags,
   }
 }
 
+// The records fitted, the fit and its report (fitting/hysteresis_fit_report.h).
+struct HysteresisFitRun {
+  std::vector<fitting::HysteresisRecord> records;
+  fitting::HysteresisFitResult fit;
+  fitting::HysteresisFitReport report;
+};
+
+// Loads the model file and the records and fits them: RunError when the fit did not converge.
+HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
+  const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
+  HysteresisFitRun run;
+  for (const auto& file : flags.files) {
+    run.records.push_back(fitting::load_hysteresis_record(file));
+  }
+  fitting::HysteresisFitOptions options;
+  options.free = flags.free;
+  options.per_file = flags.per_file;
+  options.bounds = parse_bounds(flags.bounds);
+  options.loss = fitting::parse_robust_loss(flags.loss);
+  options.loss_scale_N = flags.loss_scale_N;
+  options.solver.relative_tolerance = flags.relative_tolerance;
+  options.solver.interpolation = flags.interpolation == "linear"
+                                     ? simulate::RigInterpolation::kLinear
+                                     : simulate::RigInterpolation::kSpline;
+  options.max_iterations = flags.max_iterations;
+  options.max_nrmse_percent = flags.max_nrmse_percent;
+  check_flag_combinations(flags, options);
+  // From the model file's values (with --start) and from levels read off the records.
+  std::string chosen;
+  run.fit = fitting::fit_hysteresis_from_file_and_records(
+      run.records, start_from(model_file, flags.starts), options, &chosen);
+  fitting::require_convergence(run.fit.converged, run.fit.explains_data, "the fit",
+                               run.fit.iterations, run.fit.termination,
+                               "better start values (--start) or fewer free parameters");
+  std::vector<double> compression_m;
+  for (double mm : flags.compression_mm) compression_m.push_back(1e-3 * mm);
+  run.report = fitting::report_hysteresis_fit(run.records, run.fit, chosen, compression_m);
+  return run;
+}
+
+// The fitted models: one, or with per-file parameters and several files one per file (each
+// file has its own values of them), named model.yaml or model_<file's stem>.yaml; none when the
+// fit does not explain the data and --keep is not given.
+CommandOutcome outcome_of(const FitHysteresisFlags& flags, const HysteresisFitRun& run) {
+  CommandOutcome outcome;
+  outcome.summary = fitting::summary_json(run.fit, run.report);
+  if (!run.fit.explains_data) outcome.failure = run.fit.adequacy_note;
+  if (!run.fit.explains_data && !flags.keep) return outcome;
+  const bool per_file = flags.files.size() > 1 && !flags.per_file.empty();
+  for (std::size_t r = 0; r < (per_file ? flags.files.size() : 1); ++r) {
+    outcome.files.push_back(
+        {per_file ? io::output_for_input("model.yaml", flags.files[r]).string() : "model.yaml",
+         io::model_with_values_text(flags.model_file,
+                                    fitting::model_file_values(run.fit.fitted[r], flags.free),
+                                    "Fitted by ridefit fit hysteresis from " + flags.model_file)});
+  }
+  return outcome;
+}
+
 void run(const FitHysteresisFlags& flags) {
   if (const auto repeated = io::first_repeated_file({flags.files.begin(), flags.files.end()})) {
     throw InputError(fmt::format(
@@ -129,60 +190,86 @@ void run(const FitHysteresisFlags& flags) {
     outputs.add_file(path, path == flags.output_file ? "-o" : "-o (a per-file model)");
   }
   outputs.add_plot(flags.plot_file, "--plot");
-  const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
-  std::vector<fitting::HysteresisRecord> records;
-  for (const auto& file : flags.files) records.push_back(fitting::load_hysteresis_record(file));
-  fitting::HysteresisFitOptions options;
-  options.free = flags.free;
-  options.per_file = flags.per_file;
-  options.bounds = parse_bounds(flags.bounds);
-  options.loss = fitting::parse_robust_loss(flags.loss);
-  options.loss_scale_N = flags.loss_scale_N;
-  options.solver.relative_tolerance = flags.relative_tolerance;
-  options.solver.interpolation = flags.interpolation == "linear"
-                                     ? simulate::RigInterpolation::kLinear
-                                     : simulate::RigInterpolation::kSpline;
-  options.max_iterations = flags.max_iterations;
-  options.max_nrmse_percent = flags.max_nrmse_percent;
-  check_flag_combinations(flags, options);
-  // From the model file's values (with --start) and from levels read off the records.
-  std::string chosen;
-  const fitting::HysteresisFitResult fit = fitting::fit_hysteresis_from_file_and_records(
-      records, start_from(model_file, flags.starts), options, &chosen);
-  fitting::require_convergence(fit.converged, fit.explains_data, "the fit", fit.iterations,
-                               fit.termination,
-                               "better start values (--start) or fewer free parameters");
-  std::vector<double> compression_m;
-  for (double mm : flags.compression_mm) compression_m.push_back(1e-3 * mm);
-  const fitting::HysteresisFitReport report =
-      fitting::report_hysteresis_fit(records, fit, chosen, compression_m);
+  const HysteresisFitRun fitted = fit_records(flags);
+  const CommandOutcome outcome = outcome_of(flags, fitted);
   std::vector<std::string> written;
-  if (fit.explains_data || flags.keep) {
-    // Each file has its own values of the per-file parameters: one model per file.
-    for (std::size_t r = 0; r < model_outputs.size(); ++r) {
-      io::write_model_with_values(
-          flags.model_file, fitting::model_file_values(fit.fitted[r], flags.free), model_outputs[r],
-          "Fitted by ridefit fit hysteresis from " + flags.model_file);
-      written.push_back(model_outputs[r]);
-    }
+  for (std::size_t r = 0; r < model_outputs.size() && r < outcome.files.size(); ++r) {
+    io::write_atomically(model_outputs[r],
+                         [&](std::ostream& out) { out << outcome.files[r].text; });
+    written.push_back(model_outputs[r]);
   }
   if (!flags.plot_file.empty()) {
-    io::draw_figure(fitting::rig_fit_figure(records, fit.fitted_force_N), flags.plot_file);
+    io::draw_figure(fitting::rig_fit_figure(fitted.records, fitted.fit.fitted_force_N),
+                    flags.plot_file);
   }
   if (flags.json) {
-    nlohmann::json j = fitting::summary_json(fit, report);
+    nlohmann::json j = outcome.summary;
     j["written"] = written;
     std::cout << j.dump(2) << "\n";
   } else {
-    fitting::write_summary(std::cout, fit, report);
+    fitting::write_summary(std::cout, fitted.fit, fitted.report);
     for (const auto& path : written) std::cout << "Fitted model: " << path << "\n";
     if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
   }
-  require_explained(fit.explains_data, fit.adequacy_note,
+  require_explained(fitted.fit.explains_data, fitted.fit.adequacy_note,
                     !flags.json && !flags.output_file.empty() && !flags.keep);
 }
 
+// The fit's inputs and settings (not its outputs): the command's and a batch job's.
+void add_fit_options(CLI::App& command, FitHysteresisFlags& flags) {
+  command.add_option("files", flags.files, "Rig tests (CSV or .mat); fitted together")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command.add_option("--model", flags.model_file, "Quarter-car model file: start values")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      .add_option("--free", flags.free,
+                  "Parameters to fit, e.g. dahl_sigma0_N_per_m,coulomb_force_N")
+      ->required()
+      ->delimiter(',');
+  command
+      .add_option("--per-file", flags.per_file,
+                  "Free parameters each file gets its own value of (e.g. coulomb_force_N)")
+      ->delimiter(',');
+  command.add_option("--bounds", flags.bounds, "NAME=LOWER:UPPER (repeatable)");
+  command.add_option("--start", flags.starts,
+                     "NAME=VALUE start for a parameter not in the model file (gas_force_N, "
+                     "gas_stiffness_N_per_m, force_offset_N; stribeck_velocity_m_per_s and "
+                     "static_friction_force_N when the file has no Stribeck curve) or to "
+                     "override one");
+  command.add_option("--loss", flags.loss, "Robust loss: none, huber, cauchy")
+      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
+      ->capture_default_str();
+  command.add_option("--loss-scale", flags.loss_scale_N, "Residual [N] where the loss bends")
+      ->check(positive_number("N"))
+      ->capture_default_str();
+  add_tolerance_option(command, "--rtol", flags.relative_tolerance,
+                       "Relative tolerance of the strut's adaptive ESDIRK integration");
+  command
+      .add_option("--interpolation", flags.interpolation,
+                  "The displacement between samples: spline (C2, for smooth motions) or linear "
+                  "(for piecewise-linear commands such as triangle waves)")
+      ->check(CLI::IsMember({"spline", "linear"}))
+      ->capture_default_str();
+  command.add_option("--max-iterations", flags.max_iterations, "Solver iterations at most")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  command
+      .add_option("--compression", flags.compression_mm,
+                  "Spring compression [mm] per file: fits Fc against it (seed 000 Figure 4; "
+                  "needs --per-file coulomb_force_N)")
+      ->delimiter(',');
+  add_verdict_options(command, "NRMSE", flags.max_nrmse_percent, flags.keep);
+}
+
 }  // namespace
+
+CommandJob fit_hysteresis_job(std::vector<std::string> arguments) {
+  return command_job<FitHysteresisFlags>(
+      std::move(arguments), add_fit_options,
+      [](const FitHysteresisFlags& flags) { return outcome_of(flags, fit_records(flags)); });
+}
 
 void register_fit_hysteresis(CLI::App& fit) {
   auto flags = std::make_shared<FitHysteresisFlags>();
@@ -190,54 +277,11 @@ void register_fit_hysteresis(CLI::App& fit) {
       "hysteresis",
       "Fit Dahl friction, top mount and damping to strut rig tests (CSV: time, displacement, "
       "force)");
-  command->add_option("files", flags->files, "Rig tests (CSV or .mat); fitted together")
-      ->required()
-      ->check(CLI::ExistingFile);
-  command->add_option("--model", flags->model_file, "Quarter-car model file: start values")
-      ->required()
-      ->check(CLI::ExistingFile);
-  command
-      ->add_option("--free", flags->free,
-                   "Parameters to fit, e.g. dahl_sigma0_N_per_m,coulomb_force_N")
-      ->required()
-      ->delimiter(',');
-  command
-      ->add_option("--per-file", flags->per_file,
-                   "Free parameters each file gets its own value of (e.g. coulomb_force_N)")
-      ->delimiter(',');
-  command->add_option("--bounds", flags->bounds, "NAME=LOWER:UPPER (repeatable)");
-  command->add_option("--start", flags->starts,
-                      "NAME=VALUE start for a parameter not in the model file (gas_force_N, "
-                      "gas_stiffness_N_per_m, force_offset_N; stribeck_velocity_m_per_s and "
-                      "static_friction_force_N when the file has no Stribeck curve) or to "
-                      "override one");
-  command->add_option("--loss", flags->loss, "Robust loss: none, huber, cauchy")
-      ->check(CLI::IsMember({"none", "huber", "cauchy"}))
-      ->capture_default_str();
-  command->add_option("--loss-scale", flags->loss_scale_N, "Residual [N] where the loss bends")
-      ->check(positive_number("N"))
-      ->capture_default_str();
-  add_tolerance_option(*command, "--rtol", flags->relative_tolerance,
-                       "Relative tolerance of the strut's adaptive ESDIRK integration");
-  command
-      ->add_option("--interpolation", flags->interpolation,
-                   "The displacement between samples: spline (C2, for smooth motions) or linear "
-                   "(for piecewise-linear commands such as triangle waves)")
-      ->check(CLI::IsMember({"spline", "linear"}))
-      ->capture_default_str();
-  command->add_option("--max-iterations", flags->max_iterations, "Solver iterations at most")
-      ->check(CLI::Range(1, 10000))
-      ->capture_default_str();
-  command
-      ->add_option("--compression", flags->compression_mm,
-                   "Spring compression [mm] per file: fits Fc against it (seed 000 Figure 4; "
-                   "needs --per-file coulomb_force_N)")
-      ->delimiter(',');
+  add_fit_options(*command, *flags);
   command->add_option("-o,--output", flags->output_file, "Fitted model (YAML, the input's schema)");
   command->add_option("--plot", flags->plot_file,
                       "Measured and fitted force (.png or .svg): loops for periodic tests; force "
                       "over velocity, a time excerpt and the residual's spectrum for random ones");
-  add_verdict_options(*command, "NRMSE", flags->max_nrmse_percent, flags->keep);
   command->add_flag("--json", flags->json,
                     "Values, standard errors, correlation, cost, iterations");
   command->callback([flags] { run(*flags); });

@@ -197,9 +197,7 @@ void register_friction_study(CLI::App& app) {
       ->capture_default_str();
   command->add_option("-o,--output-dir", flags->output_dir,
                       "Directory for the PSD CSV files (one per excitation)");
-  command->add_flag("--force", flags->force,
-                    "Write into an existing -o folder that holds files ridefit did not write "
-                    "there (files of the same name are replaced; inputs never are)");
+  add_force_flag(*command, flags->force);
   command->add_option("--rate", flags->output_rate_Hz, "Output sample rate [Hz]")
       ->check(positive_number("Hz"))
       ->capture_default_str();

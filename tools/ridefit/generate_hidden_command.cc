@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 
+#include "command_options.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/staged_folder.h"
@@ -68,9 +69,7 @@ void register_generate_hidden(CLI::App& app) {
   command->add_option("-o,--output", flags->output_dir, "Output folder")->required();
   command->add_option("--seed", flags->seed_offset, "Added to every dataset's noise seed")
       ->capture_default_str();
-  command->add_flag("--force", flags->force,
-                    "Write into an existing -o folder that holds files ridefit did not write "
-                    "there (files of the same name are replaced; inputs never are)");
+  add_force_flag(*command, flags->force);
   command->callback([flags] { run(*flags); });
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <thread>
 
+#include "collective_run_error.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/distributed/mpi_session.h"
 #include "ridefit/io/temporary_files.h"
@@ -61,6 +62,9 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   } catch (const ridefit::InputError& e) {
     return fail(session, std::string("ridefit: error: ") + e.what(), 2);
+  } catch (const ridefit::cli::CollectiveRunError& e) {
+    if (session.root()) std::cerr << "ridefit: run failed: " << e.what() << "\n";
+    return 1;
   } catch (const ridefit::RunError& e) {
     return fail(session, std::string("ridefit: run failed: ") + e.what(), 1);
   } catch (const std::bad_alloc&) {

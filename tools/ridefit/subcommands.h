@@ -17,6 +17,7 @@ void register_optimise(CLI::App& app);
 void register_diagnose(CLI::App& app);
 void register_generate_hidden(CLI::App& app);
 void register_road(CLI::App& app);
+void register_batch(CLI::App& app);
 
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
@@ -30,6 +31,7 @@ inline void register_subcommands(CLI::App& app) {
   register_diagnose(app);
   register_generate_hidden(app);
   register_road(app);
+  register_batch(app);
 }
 
 }  // namespace ridefit::cli

@@ -2,13 +2,15 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <sstream>
+
 #include "ridefit/io/atomic_file.h"
 
 namespace ridefit::io {
 
-void write_model_with_values(const std::filesystem::path& model_file,
-                             const std::vector<std::pair<std::string, std::string>>& values,
-                             const std::filesystem::path& output_file, const std::string& comment) {
+std::string model_with_values_text(const std::filesystem::path& model_file,
+                                   const std::vector<std::pair<std::string, std::string>>& values,
+                                   const std::string& comment) {
   YAML::Node root = YAML::LoadFile(model_file.string());
   // Not a structured binding: Clang 14 cannot capture one in the lambda below.
   for (const auto& entry : values) {
@@ -31,17 +33,31 @@ void write_model_with_values(const std::filesystem::path& model_file,
     };
     set(set, root, 0);
   }
-  write_atomically(output_file, [&](std::ostream& out) {
-    out << "# " << comment << "\n" << root << "\n";
-  });
+  std::ostringstream out;
+  out << "# " << comment << "\n" << root << "\n";
+  return out.str();
+}
+
+std::string model_with_values_text(const std::filesystem::path& model_file,
+                                   const std::vector<std::pair<std::string, double>>& values,
+                                   const std::string& comment) {
+  std::vector<std::pair<std::string, std::string>> texts;
+  for (const auto& [key, value] : values) texts.emplace_back(key, YAML::Node(value).Scalar());
+  return model_with_values_text(model_file, texts, comment);
+}
+
+void write_model_with_values(const std::filesystem::path& model_file,
+                             const std::vector<std::pair<std::string, std::string>>& values,
+                             const std::filesystem::path& output_file, const std::string& comment) {
+  const std::string text = model_with_values_text(model_file, values, comment);
+  write_atomically(output_file, [&](std::ostream& out) { out << text; });
 }
 
 void write_model_with_values(const std::filesystem::path& model_file,
                              const std::vector<std::pair<std::string, double>>& values,
                              const std::filesystem::path& output_file, const std::string& comment) {
-  std::vector<std::pair<std::string, std::string>> texts;
-  for (const auto& [key, value] : values) texts.emplace_back(key, YAML::Node(value).Scalar());
-  write_model_with_values(model_file, texts, output_file, comment);
+  const std::string text = model_with_values_text(model_file, values, comment);
+  write_atomically(output_file, [&](std::ostream& out) { out << text; });
 }
 
 }  // namespace ridefit::io

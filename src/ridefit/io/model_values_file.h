@@ -17,6 +17,15 @@ void write_model_with_values(const std::filesystem::path& model_file,
                              const std::vector<std::pair<std::string, std::string>>& values,
                              const std::filesystem::path& output_file, const std::string& comment);
 
+// The text write_model_with_values writes, in memory (for a run that writes it elsewhere, or
+// sends it to another process first).
+std::string model_with_values_text(const std::filesystem::path& model_file,
+                                   const std::vector<std::pair<std::string, std::string>>& values,
+                                   const std::string& comment);
+std::string model_with_values_text(const std::filesystem::path& model_file,
+                                   const std::vector<std::pair<std::string, double>>& values,
+                                   const std::string& comment);
+
 // The same with numbers, each written as yaml-cpp writes a double (17 significant digits; .nan,
 // .inf), so it reads back as the same value.
 void write_model_with_values(const std::filesystem::path& model_file,

@@ -35,6 +35,11 @@ std::set<std::string> manifest_names(const fs::path& dir) {
   return names;
 }
 
+// A folder a ridefit run wrote (it holds the run's manifest).
+bool is_output_folder(const fs::path& path) {
+  return fs::is_directory(path) && fs::is_regular_file(path / kOutputManifest);
+}
+
 }  // namespace
 
 bool same_file(const fs::path& a, const fs::path& b) {
@@ -128,7 +133,11 @@ void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
     if (name == kOutputManifest || is_ridefit_temporary(name)) continue;
-    if (ours.count(name) != 0 && entry.is_regular_file()) continue;
+    // A listed file, or a listed folder ridefit wrote (`batch`'s job folders, each checked
+    // against its own manifest when the run writes it).
+    if (ours.count(name) != 0 && (entry.is_regular_file() || is_output_folder(entry.path()))) {
+      continue;
+    }
     foreign.push_back(name);
   }
   if (foreign.empty()) return;
@@ -147,7 +156,8 @@ void RunOutputs::add_folder(const fs::path& dir, const std::string& flag,
 void finish_output_folder(const fs::path& dir, const std::vector<std::string>& files) {
   std::set<std::string> names = manifest_names(dir);
   for (auto it = names.begin(); it != names.end();) {
-    it = fs::is_regular_file(dir / *it) ? std::next(it) : names.erase(it);
+    const bool kept = fs::is_regular_file(dir / *it) || is_output_folder(dir / *it);
+    it = kept ? std::next(it) : names.erase(it);
   }
   names.insert(files.begin(), files.end());
   write_atomically(dir / kOutputManifest, [&](std::ostream& out) {
