@@ -81,6 +81,18 @@ TEST(TaskFarm, OneProcessHandsOverEachResultAsItFinishes) {
   EXPECT_EQ(broadcast_from_root(session, "unchanged"), "unchanged");
 }
 
+TEST(TaskFarm, OneProcessCountsEveryTaskOnRankZeroAndNothingSent) {
+  const MpiSession session(argc, argv);
+  TaskFarmStatistics statistics{.chunks_handed_out = 5, .bytes_broadcast = 9};  // overwritten
+  TaskFarmOptions options;
+  options.threads = 2;
+  options.statistics = &statistics;
+  run_task_farm(session, 13, [](std::size_t i) { return std::to_string(i); }, options);
+  EXPECT_EQ(statistics.tasks_on_rank0, 13u);
+  EXPECT_EQ(statistics.chunks_handed_out, 0u);
+  EXPECT_EQ(statistics.bytes_received + statistics.bytes_sent + statistics.bytes_broadcast, 0u);
+}
+
 TEST(TaskFarm, InjectedFaultThrowsARunErrorAtItsTask) {
   const MpiSession session(argc, argv);
   setenv("RIDEFIT_TEST_FAULT", "throw:3", 1);

@@ -48,9 +48,20 @@ run_in "$tmp/one" "$ridefit" optimise "$study" -q -o r.yaml >/dev/null ||
   fail "the one-process run failed"
 grep -q '^status: optimum' "$tmp/one/r.yaml" || fail "the one-process run found no optimum"
 grep -q 'comfort_loss' "$tmp/one/r.yaml" || fail "the study has no friction-blind optimum"
-run_in "$tmp/two" ranks 2 "$ridefit" optimise "$study" -q -o r.yaml >/dev/null ||
+run_in "$tmp/two" ranks 2 "$ridefit" optimise "$study" -q -o r.yaml --json >"$tmp/two.json" ||
   fail "mpirun -np 2 failed"
 same_result "$tmp/two" "$tmp/one" "2 ranks"
+# --json says how the searches were shared: 4 starts and the friction-blind optimum's 4, then
+# both verifications; then 3 trade-off points from 4 starts each, and their verifications.
+/usr/bin/env python3 - "$tmp/two.json" <<'PY' || fail "2 ranks: --json does not say how the searches were shared"
+import json, sys
+r = json.load(open(sys.argv[1]))["ranks"]
+assert r["count"] == 2, r
+assert [s["searches"] for s in r["stages"]] == [8, 2, 12, 3], r["stages"]
+assert r["searches"] == 25 and 0 < r["searches_on_rank0"] < 25, r
+assert r["bytes_received_by_rank0"] > 0 and r["bytes_broadcast_by_rank0"] > 0, r
+assert all(0 < s["longest_search_s"] <= s["wall_time_s"] for s in r["stages"]), r["stages"]
+PY
 run_in "$tmp/three" ranks 3 --oversubscribe "$ridefit" optimise "$study" -q --threads 1 \
   -o r.yaml >/dev/null || fail "mpirun -np 3 --oversubscribe failed"
 same_result "$tmp/three" "$tmp/one" "3 ranks"

@@ -1,8 +1,11 @@
 #include "distributed_tuning.h"
 
+#include <algorithm>
+#include <chrono>
 #include <string>
 #include <utility>
 
+#include "ridefit/common/byte_buffer.h"
 #include "ridefit/distributed/task_farm.h"
 #include "ridefit/optimisation/nlopt_tuner.h"
 #include "ridefit/optimisation/run_bytes.h"
@@ -10,6 +13,24 @@
 namespace ridefit::cli {
 
 namespace opt = optimisation;
+
+namespace {
+
+// A search's result as sent: the seconds it took on its rank, then its run and evaluations.
+std::string timed_result(double seconds, const std::string& run_bytes) {
+  common::ByteWriter writer;
+  writer.put(seconds);
+  writer.put(run_bytes);
+  return writer.take();
+}
+
+std::pair<double, std::string> untimed(const std::string& bytes) {
+  common::ByteReader reader(bytes);
+  const double seconds = reader.get<double>();
+  return {seconds, reader.get_string()};
+}
+
+}  // namespace
 
 std::vector<opt::OptimisationRun> RankSearchRunner::run(opt::TuningProblem& problem,
                                                         const std::vector<opt::SearchTask>& tasks) {
@@ -25,24 +46,48 @@ std::vector<opt::OptimisationRun> RankSearchRunner::run(opt::TuningProblem& prob
   if (journal_ != nullptr) {
     // Rank 0's own searches appended as they evaluated; the others' come with their runs.
     options.on_result = [this](std::size_t, const std::string& bytes) {
-      for (const auto& record : opt::run_from_bytes(bytes).second) journal_->append(record);
+      for (const auto& record : opt::run_from_bytes(untimed(bytes).second).second) {
+        journal_->append(record);
+      }
     };
   }
+  distributed::TaskFarmStatistics farm;
+  options.statistics = &farm;
+  const auto started = std::chrono::steady_clock::now();
   const std::vector<std::string> results = distributed::run_task_farm(
       session_, tasks.size(),
       [&](std::size_t i) {
+        const auto search_started = std::chrono::steady_clock::now();
         opt::TuningProblem branch = problem.branch(case_threads);
         const opt::OptimisationRun run = tasks[i](branch);
-        return opt::run_to_bytes(run, branch.take_computed());
+        std::string bytes = opt::run_to_bytes(run, branch.take_computed());
+        return timed_result(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - search_started)
+                .count(),
+            bytes);
       },
       options);
+  StageShare stage{
+      .searches = tasks.size(),
+      .wall_time_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()};
+  share_.searches += tasks.size();
+  share_.searches_on_rank0 += farm.tasks_on_rank0;
+  share_.bytes_received += farm.bytes_received;
+  share_.bytes_sent += farm.bytes_sent;
+  share_.bytes_broadcast += farm.bytes_broadcast;
   std::vector<opt::OptimisationRun> runs;
   runs.reserve(results.size());
   for (const auto& bytes : results) {
-    auto [run, computed] = opt::run_from_bytes(bytes);
+    auto [seconds, run_bytes] = untimed(bytes);
+    share_.search_time_s += seconds;
+    stage.longest_search_s = std::max(stage.longest_search_s, seconds);
+    auto [run, computed] = opt::run_from_bytes(run_bytes);
+    share_.evaluations += computed.size();
     problem.learn(computed);
     runs.push_back(std::move(run));
   }
+  share_.stages.push_back(stage);
   return runs;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "ridefit/distributed/mpi_session.h"
@@ -14,6 +15,26 @@ namespace ridefit::cli {
 // bit for bit, so every rank goes on from the same state and the outcome is that of one
 // process. Rank 0 alone owns the journal: its own searches append as they evaluate, the other
 // ranks' evaluations are appended as each of their searches ends.
+// What one stage's searches cost: every stage waits for its longest search.
+struct StageShare {
+  std::size_t searches = 0;
+  double wall_time_s = 0;
+  double longest_search_s = 0;
+};
+
+// What the searches cost and what rank 0 exchanged over the study's stages: the figures behind
+// the scaling estimate (`optimise --json`, `ranks`).
+struct SearchShare {
+  std::vector<StageShare> stages;
+  std::size_t searches = 0;
+  std::size_t searches_on_rank0 = 0;
+  std::size_t evaluations = 0;      // computed in the searches (not found in the journal)
+  double search_time_s = 0;         // summed over the searches, each timed on its rank
+  std::size_t bytes_received = 0;   // by rank 0: requests with runs and evaluations
+  std::size_t bytes_sent = 0;       // by rank 0: assignments of searches
+  std::size_t bytes_broadcast = 0;  // by rank 0: every run, to every other rank
+};
+
 class RankSearchRunner final : public optimisation::SearchRunner {
  public:
   RankSearchRunner(const distributed::MpiSession& session, unsigned threads,
@@ -22,11 +43,13 @@ class RankSearchRunner final : public optimisation::SearchRunner {
   std::vector<optimisation::OptimisationRun> run(
       optimisation::TuningProblem& problem,
       const std::vector<optimisation::SearchTask>& tasks) override;
+  const SearchShare& share() const { return share_; }
 
  private:
   const distributed::MpiSession& session_;
   unsigned threads_;
   optimisation::EvaluationJournal* journal_;  // rank 0's; null elsewhere
+  SearchShare share_;
 };
 
 // Rank 0's journal evaluations made known to the problems of every rank (collective).

@@ -100,7 +100,9 @@ void run(const OptimiseFlags& flags) {
   // Under mpirun every rank runs the study alike and the searches are spread over the ranks;
   // rank 0 alone checks and writes files, owns the journal and prints.
   const distributed::MpiSession* session = distributed::MpiSession::current();
-  const bool over_ranks = session != nullptr && session->active() && session->size() > 1;
+  // Under mpirun (even -np 1) the searches go through the task farm, which reports the share.
+  const bool under_mpirun = session != nullptr && session->active();
+  const bool over_ranks = under_mpirun && session->size() > 1;
   const bool root = session == nullptr || session->root();
   const bool quiet = flags.quiet || !root;
   opt::TuningStudy study = opt::load_tuning_study(flags.study_file);
@@ -117,12 +119,11 @@ void run(const OptimiseFlags& flags) {
     journal.emplace(open_journal(flags, study, files.journal));
     problem.attach_journal(&*journal);
   }
-  std::unique_ptr<opt::SearchRunner> ranks;
-  if (over_ranks) {
+  std::optional<RankSearchRunner> ranks;
+  if (under_mpirun) {
     share_journal(*session, problem, journal ? &*journal : nullptr);
-    ranks = std::make_unique<RankSearchRunner>(
-        *session, flags.threads > 0 ? static_cast<unsigned>(flags.threads) : 0u,
-        journal ? &*journal : nullptr);
+    ranks.emplace(*session, flags.threads > 0 ? static_cast<unsigned>(flags.threads) : 0u,
+                  journal ? &*journal : nullptr);
   }
   if (!quiet) {
     std::cerr << fmt::format(
@@ -138,13 +139,13 @@ void run(const OptimiseFlags& flags) {
         std::cerr << "optimise" << (stage.empty() ? "" : " (" + stage + ")") << ": " << line
                   << "\n";
       },
-      ranks.get());
+      ranks ? &*ranks : nullptr);
   const double wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!root) return;
 
   const opt::WrittenFiles written = opt::written_files(files, outcome, flags.plot_file);
-  const nlohmann::json result = opt::tuning_result(problem, outcome, written, wall_time_s);
+  nlohmann::json result = opt::tuning_result(problem, outcome, written, wall_time_s);
   opt::write_tuning_result(problem, outcome, written, result, files.result,
                            "ridefit optimise " + flags.study_file);
   if (!flags.plot_file.empty()) {
@@ -152,6 +153,25 @@ void run(const OptimiseFlags& flags) {
   }
   journal->mark_finished();
   if (flags.json) {
+    if (ranks) {
+      // How the work was shared (stdout only: the result file is the one-process run's).
+      const SearchShare& share = ranks->share();
+      nlohmann::json stages = nlohmann::json::array();
+      for (const StageShare& stage : share.stages) {
+        stages.push_back({{"searches", stage.searches},
+                          {"wall_time_s", stage.wall_time_s},
+                          {"longest_search_s", stage.longest_search_s}});
+      }
+      result["ranks"] = {{"count", session->size()},
+                         {"stages", stages},
+                         {"searches", share.searches},
+                         {"searches_on_rank0", share.searches_on_rank0},
+                         {"evaluations", share.evaluations},
+                         {"search_time_s", share.search_time_s},
+                         {"bytes_received_by_rank0", share.bytes_received},
+                         {"bytes_sent_by_rank0", share.bytes_sent},
+                         {"bytes_broadcast_by_rank0", share.bytes_broadcast}};
+    }
     std::cout << result.dump(2) << "\n";
   } else {
     opt::write_tuning_report(std::cout, problem, outcome, wall_time_s);

@@ -298,7 +298,8 @@ std::vector<std::string> lead(const MpiSession& session, std::size_t count, unsi
 // Rank 0's results, or the exception it threw, sent to every rank; every rank returns the
 // results or throws that exception.
 std::vector<std::string> share_outcome(const MpiSession& session,
-                                       const std::function<std::vector<std::string>()>& lead_run) {
+                                       const std::function<std::vector<std::string>()>& lead_run,
+                                       TaskFarmStatistics* statistics) {
   std::string bytes;
   if (session.root()) {
     try {
@@ -323,6 +324,7 @@ std::vector<std::string> share_outcome(const MpiSession& session,
   MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
   bytes.resize(size);
   MPI_Bcast(bytes.data(), static_cast<int>(size), MPI_BYTE, 0, MPI_COMM_WORLD);
+  if (session.root() && statistics != nullptr) statistics->bytes_broadcast = size;
   std::size_t at = 0;
   if (take_u64(bytes, at) != 0) {
     const int kind = static_cast<int>(take_u64(bytes, at));
@@ -346,17 +348,21 @@ std::vector<std::string> run_task_farm(const MpiSession& session, std::size_t co
 #ifdef RIDEFIT_HAVE_MPI
   if (session.active() && session.size() > 1) {
     if (options.results_on_every_rank) {
-      return share_outcome(session, [&]() -> std::vector<std::string> {
-        if (session.root()) return lead(session, count, threads, run, options);
-        work(session, count, threads, run);
-        return {};
-      });
+      return share_outcome(
+          session,
+          [&]() -> std::vector<std::string> {
+            if (session.root()) return lead(session, count, threads, run, options);
+            work(session, count, threads, run);
+            return {};
+          },
+          options.statistics);
     }
     if (session.root()) return lead(session, count, threads, run, options);
     work(session, count, threads, run);
     return {};
   }
 #endif
+  if (options.statistics) *options.statistics = {.tasks_on_rank0 = count};
   std::vector<std::string> results(count);
   std::size_t done = 0;
   common::parallel_for(

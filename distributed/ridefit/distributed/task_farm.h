@@ -9,13 +9,14 @@
 
 namespace ridefit::distributed {
 
-// What rank 0's scheduler exchanged in a run over ranks (all zero in one process): the figures
-// behind the scaling estimate.
+// What rank 0's scheduler exchanged in a run over ranks (in one process: every task on rank 0,
+// nothing exchanged): the figures behind the scaling estimate.
 struct TaskFarmStatistics {
   std::size_t chunks_handed_out = 0;  // to the other ranks
   std::size_t bytes_received = 0;     // requests with results, and failures
   std::size_t bytes_sent = 0;         // chunk assignments and stops
   std::size_t tasks_on_rank0 = 0;
+  std::size_t bytes_broadcast = 0;  // results_on_every_rank: every result, to every other rank
 };
 
 struct TaskFarmOptions {
