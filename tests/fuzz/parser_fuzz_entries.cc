@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "batch_jobs.h"  // the CLI's (tools/ridefit/)
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/io/csv_table.h"
@@ -146,7 +147,14 @@ Outcome opencrg_file(std::span<const std::uint8_t> input) {
   });
 }
 
-constexpr std::array<Target, 7> kTargets{{
+// A `ridefit batch` job file in studies/, beside the linked lab/, vehicles/ and hidden/: every
+// job's record list, model and options parsed by its command's own flags (nothing is run).
+Outcome batch_jobs_yaml(std::span<const std::uint8_t> input) {
+  const fs::path path = scratch().write("studies", "jobs.yaml", input);
+  return outcome_of([&] { (void)cli::load_batch_jobs(path); });
+}
+
+constexpr std::array<Target, 8> kTargets{{
     {"model_yaml", &model_yaml},
     {"excitation_yaml", &excitation_yaml},
     {"tuning_study_yaml", &tuning_study_yaml},
@@ -154,6 +162,7 @@ constexpr std::array<Target, 7> kTargets{{
     {"csv_with_units", &csv_with_units},
     {"journal", &journal},
     {"opencrg_file", &opencrg_file},
+    {"batch_jobs_yaml", &batch_jobs_yaml},
 }};
 
 }  // namespace

@@ -20,7 +20,7 @@ struct Target {
 };
 
 // model_yaml, excitation_yaml, tuning_study_yaml, sweep_study_yaml, csv_with_units, journal,
-// opencrg_file.
+// opencrg_file, batch_jobs_yaml.
 std::span<const Target> targets();
 
 // The target called `name`; std::invalid_argument for another name.

@@ -59,6 +59,19 @@ for n in two three; do
   cmp one.csv.cmp "$n.csv.cmp" || fail "$n ranks: summary.csv differs (wall times aside)"
   cmp one.json.cmp "$n.json.cmp" || fail "$n ranks: summary.json differs (wall times aside)"
 done
+# --json under ranks: the summary plus how the jobs were shared (every job once; the results,
+# files and summary rows, came back to rank 0 as bytes).
+ranks 2 "$ridefit" batch jobs.yaml -o json --json --threads 1 >json.out 2>json.err
+/usr/bin/env python3 - json.out <<'PY' || fail "mpirun -np 2 --json: no ranks block that adds up"
+import json, sys
+j = json.load(open(sys.argv[1]))
+r = j["ranks"]
+assert r["count"] == 2, r
+assert r["jobs_on_rank0"] + r["jobs_to_other_ranks"] == 6, r
+assert r["jobs_to_other_ranks"] == 0 or r["bytes_received_by_rank0"] > 1000, r
+assert r["bytes_sent_by_rank0"] > 0, r
+assert len(j["jobs"]) == 6
+PY
 for job in shim_0mm shim_2mm shim_4mm psd; do
   [ -s "one/$job/model.yaml" ] && [ -s "one/$job/result.json" ] || fail "$job: no model or result"
 done

@@ -110,9 +110,11 @@ void run(const BatchFlags& flags) {
     io::finish_output_folder(dir, names);
     write_batch_summary(dir, batch_summary_json(flags.job_file, jobs, results));
   }
+  distributed::TaskFarmStatistics farm;
   distributed::TaskFarmOptions options;
   options.threads = flags.threads;
   options.chunk = 1;
+  options.statistics = &farm;
   options.on_result = [&](std::size_t task, const std::string& bytes) {
     results[task] = decode_batch_job_result(bytes);
     write_job_folder(dir / jobs[task].name, jobs[task], results[task]);
@@ -130,7 +132,16 @@ void run(const BatchFlags& flags) {
   if (session.root()) {
     const nlohmann::json summary = batch_summary_json(flags.job_file, jobs, results);
     if (flags.json) {
-      std::cout << summary.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+      // Under mpirun, how the jobs were shared (printed only: the files are any run's).
+      nlohmann::json printed = summary;
+      if (session.size() > 1) {
+        printed["ranks"] = {{"count", session.size()},
+                            {"jobs_on_rank0", farm.tasks_on_rank0},
+                            {"jobs_to_other_ranks", farm.chunks_handed_out},
+                            {"bytes_received_by_rank0", farm.bytes_received},
+                            {"bytes_sent_by_rank0", farm.bytes_sent}};
+      }
+      std::cout << printed.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     } else {
       print_table(summary, dir);
     }
