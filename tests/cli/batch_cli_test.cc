@@ -258,6 +258,15 @@ INSTANTIATE_TEST_SUITE_P(
                 "key 'jobs[1].command' is 'fit loops', expected one of"},
         BadJobs{"NoModel", "defaults: {command: diagnose}\njobs:\n  - record: {shim}\n",
                 "job 1 (shim_0mm): key 'model' is missing"},
+        // Found by the batch_jobs_yaml fuzzer: a name too long for the system escaped as
+        // std::filesystem's error.
+        BadJobs{"ModelNameTooLong",
+                "defaults: {command: diagnose, model: " + std::string(300, 'm') +
+                    ".yaml}\njobs:\n  - record: {shim}\n",
+                "job 1 (shim_0mm): key 'model': "},
+        BadJobs{"RecordNameTooLong",
+                shim_jobs("  - record: {shim}\n  - record: lab/" + std::string(300, 'r') + "\n"),
+                "job 2 (" + std::string(300, 'r') + "): key 'record': "},
         BadJobs{"OutputIsAnInput",
                 shim_jobs("  - record: {shim}\n    name: clash\n    model: out/clash/model.yaml\n"),
                 "job 1 (clash): -o " /* the folder */}),

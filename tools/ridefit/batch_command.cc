@@ -21,6 +21,7 @@
 #include "ridefit/distributed/task_farm.h"
 #include "ridefit/io/atomic_file.h"
 #include "ridefit/io/output_paths.h"
+#include "ridefit/io/path_type.h"
 #include "ridefit/io/staged_folder.h"
 #include "subcommands.h"
 
@@ -63,7 +64,7 @@ void check_outputs(const BatchFlags& flags, const std::vector<BatchJob>& jobs) {
 // A finished job's folder, written as a whole; what an earlier run wrote there and this one
 // does not (a failed job's model) goes. A failed job without results makes no new folder.
 void write_job_folder(const fs::path& dir, const BatchJob& job, const BatchJobResult& result) {
-  if (result.files.empty() && !fs::exists(dir)) return;
+  if (result.files.empty() && !io::path_exists(dir)) return;
   std::vector<std::string> names = job.files;
   for (const auto& file : result.files) {
     if (std::find(names.begin(), names.end(), file.name) == names.end()) names.push_back(file.name);

@@ -13,6 +13,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/io/output_paths.h"
+#include "ridefit/io/path_type.h"
 #include "ridefit/io/yaml_map.h"
 
 namespace ridefit::cli {
@@ -43,6 +44,15 @@ struct JobPlace {
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(fmt::format("{}: job {}{}: {}", file.string(), number,
                                  name.empty() ? "" : fmt::format(" ({})", name), what));
+  }
+  // Whether `path`, given under `key`, is a file; a path the system cannot look at (a name too
+  // long, a folder that may not be searched) is refused here, naming the key.
+  bool is_file(const fs::path& path, const std::string& key) const {
+    try {
+      return io::exists_as_file(path);
+    } catch (const InputError& e) {
+      fail(fmt::format("key '{}': {}", key, e.what()));
+    }
   }
   // A message of the job file's reader (it begins with the file's name), placed in the job.
   [[noreturn]] void fail_with(const std::exception& e) const {
@@ -107,13 +117,15 @@ JobSettings read_settings(const io::YamlMap& map, JobSettings settings) {
 // The files a glob pattern matches, sorted.
 std::vector<fs::path> glob_files(const fs::path& pattern) {
   glob_t matches{};
-  std::vector<fs::path> files;
+  std::vector<fs::path> found;
   if (glob(pattern.c_str(), 0, nullptr, &matches) == 0) {
-    for (std::size_t i = 0; i < matches.gl_pathc; ++i) {
-      if (fs::is_regular_file(matches.gl_pathv[i])) files.emplace_back(matches.gl_pathv[i]);
-    }
+    for (std::size_t i = 0; i < matches.gl_pathc; ++i) found.emplace_back(matches.gl_pathv[i]);
   }
-  globfree(&matches);
+  globfree(&matches);  // before anything may throw
+  std::vector<fs::path> files;
+  for (auto& path : found) {
+    if (io::exists_as_file(path)) files.push_back(std::move(path));
+  }
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -133,7 +145,7 @@ std::vector<std::vector<fs::path>> read_records(const io::YamlMap& job, const Jo
     for (const auto& text : job.texts("record")) {
       const fs::path path =
           (fs::path(text).is_relative() ? dir / text : fs::path(text)).lexically_normal();
-      if (!fs::is_regular_file(path)) {
+      if (!place.is_file(path, "record")) {
         place.fail(fmt::format("key 'record': {}: no such file", path.string()));
       }
       records.push_back(path);
@@ -191,7 +203,7 @@ BatchJob make_job(JobSettings settings, const std::vector<fs::path>& records,
         "or diagnose");
   }
   if (settings.model.empty()) place.fail("key 'model' is missing (here or under `defaults:`)");
-  if (!fs::is_regular_file(settings.model)) {
+  if (!place.is_file(settings.model, "model")) {
     place.fail(fmt::format("key 'model': {}: no such file", settings.model.string()));
   }
   BatchJob job;
