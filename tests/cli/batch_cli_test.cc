@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -203,6 +204,10 @@ struct BadJobs {
 };
 
 class BatchBadInput : public ::testing::TestWithParam<BadJobs> {};
+
+// Names the case in ctest's listing (gtest would print the object's bytes, which change
+// from build to build).
+void PrintTo(const BadJobs& c, std::ostream* os) { *os << c.name; }
 
 TEST_P(BatchBadInput, ExitsTwoBeforeAnythingRuns) {
   testing::TempDir dir("ridefit_batch_bad");

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <ostream>
 #include <string>
 
 #include "ridefit/io/quarter_car_file.h"
@@ -71,6 +72,10 @@ struct BadDiagnosis {
 };
 
 class DiagnoseBadInput : public ::testing::TestWithParam<BadDiagnosis> {};
+
+// Names the case in ctest's listing (gtest would print the object's bytes, which change
+// from build to build).
+void PrintTo(const BadDiagnosis& c, std::ostream* os) { *os << c.name; }
 
 TEST_P(DiagnoseBadInput, ExitTwoWithAClearMessageAndNoOutput) {
   testing::TempDir dir("ridefit_diagnose_bad");

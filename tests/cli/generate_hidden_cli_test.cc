@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #include "ridefit/fitting/hysteresis_record.h"
@@ -106,6 +107,10 @@ struct BadSpec {
 };
 
 class GenerateHiddenBadSpec : public ::testing::TestWithParam<BadSpec> {};
+
+// Names the case in ctest's listing (gtest would print the object's bytes, which change
+// from build to build).
+void PrintTo(const BadSpec& c, std::ostream* os) { *os << c.name; }
 
 TEST_P(GenerateHiddenBadSpec, ExitTwoNamingTheKeyAndNothingWritten) {
   testing::TempDir dir("ridefit_hidden_bad");

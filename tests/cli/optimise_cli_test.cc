@@ -9,6 +9,7 @@
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 #include <thread>
 
@@ -196,6 +197,10 @@ struct BadStudy {
 };
 
 class OptimiseBadInput : public ::testing::TestWithParam<BadStudy> {};
+
+// Names the case in ctest's listing (gtest would print the object's bytes, which change
+// from build to build).
+void PrintTo(const BadStudy& c, std::ostream* os) { *os << c.name; }
 
 TEST_P(OptimiseBadInput, ExitTwoWithAMessage) {
   testing::TempDir dir("ridefit_optimise_cli");

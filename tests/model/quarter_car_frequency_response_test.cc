@@ -6,6 +6,8 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <string>
+#include <tuple>
 
 #include "ridefit/model/quarter_car.h"
 #include "ridefit/simulate/quarter_car_simulation.h"
@@ -93,10 +95,14 @@ TEST_P(LinearQuarterCarResponse, SteadyStateMatchesAnalyticFrequencyResponse) {
       << to_string(state) << " at " << frequency_Hz << " Hz";
 }
 
-INSTANTIATE_TEST_SUITE_P(SlipAndStick, LinearQuarterCarResponse,
-                         ::testing::Combine(::testing::Values(DamperState::kSlip,
-                                                              DamperState::kStick),
-                                            ::testing::Values(1.0, 6.0, 13.0, 30.0)));
+INSTANTIATE_TEST_SUITE_P(
+    SlipAndStick, LinearQuarterCarResponse,
+    ::testing::Combine(::testing::Values(DamperState::kSlip, DamperState::kStick),
+                       ::testing::Values(1.0, 6.0, 13.0, 30.0)),
+    [](const ::testing::TestParamInfo<std::tuple<DamperState, double>>& param_info) {
+      return std::string(to_string(std::get<0>(param_info.param))) + "_" +
+             std::to_string(static_cast<int>(std::get<1>(param_info.param))) + "Hz";
+    });
 
 TEST(LinearQuarterCarResponse, StickSlipWithoutFrictionEqualsSlip) {
   auto file = testing::passat_corner();
