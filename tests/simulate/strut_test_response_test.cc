@@ -137,7 +137,7 @@ TEST(StrutTestSystem, JacobianMatchesAutodiffOfTheModel) {
               c(p.top_mount_stiffness_N_per_m), c(p.damping_Ns_per_m), c(p.gas_force_N),
               c(p.gas_stiffness_N_per_m),       c(p.force_offset_N),   c(p.static_friction_force_N),
               c(p.stribeck_velocity_m_per_s)};
-          model::StrutTest::derivatives(ya, c(rig.at(0.3)), c(0.0), pa, fa);
+          model::StrutTest::derivatives(ya, c(rig.at(0.3)), c(rig.rate_at(0.3)), c(0.0), pa, fa);
           for (int row = 0; row < 2; ++row) {
             for (int col = 0; col < 2; ++col) {
               const double expected = fa[row].derivatives()[col];

@@ -18,6 +18,7 @@
 #include "ridefit/fitting/fit_convergence.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/hysteresis_fit_report.h"
+#include "ridefit/fitting/hysteresis_prediction.h"
 #include "ridefit/fitting/rig_figure.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
@@ -43,6 +44,8 @@ struct FitHysteresisFlags {
   std::string interpolation = "spline";
   int max_iterations = 100;
   std::vector<double> compression_mm;
+  std::vector<std::string> validate_files;
+  double validate_from_s = 0.0;
   std::string output_file;
   std::string plot_file;
   double max_nrmse_percent = 10.0;
@@ -113,14 +116,48 @@ struct HysteresisFitRun {
   std::vector<fitting::HysteresisRecord> records;
   fitting::HysteresisFitResult fit;
   fitting::HysteresisFitReport report;
+  std::vector<fitting::RecordPrediction> validation;  // the --validate records, predicted
 };
+
+// The fitted strut run over the --validate records (tests it was not fitted to), scored from
+// --validate-from on.
+std::vector<fitting::RecordPrediction> validate(const FitHysteresisFlags& flags,
+                                                const HysteresisFitRun& run,
+                                                const simulate::StrutTestSolverOptions& solver) {
+  std::vector<fitting::HysteresisRecord> held_out;
+  for (const auto& file : flags.validate_files) {
+    for (auto& test : fitting::load_hysteresis_tests(file)) held_out.push_back(std::move(test));
+  }
+  if (held_out.empty()) return {};
+  return fitting::predict_records(held_out, run.fit.fitted.front(), solver, flags.validate_from_s);
+}
+
+nlohmann::json validation_json(const std::vector<fitting::RecordPrediction>& validation) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& p : validation) {
+    j.push_back({{"file", p.source},
+                 {"nrmse_percent", p.nrmse_percent},
+                 {"residual_rms_N", p.residual_rms_N},
+                 {"scored_from_s", p.score_from_s},
+                 {"samples", p.scored}});
+  }
+  return j;
+}
 
 // Loads the model file and the records and fits them: RunError when the fit did not converge.
 HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   HysteresisFitRun run;
   for (const auto& file : flags.files) {
-    run.records.push_back(fitting::load_hysteresis_record(file));
+    const std::size_t before = run.records.size();
+    for (auto& test : fitting::load_hysteresis_tests(file)) run.records.push_back(std::move(test));
+    if (!flags.per_file.empty() && run.records.size() - before > 1) {
+      throw InputError(fmt::format(
+          "--per-file {}: {} holds {} tests (a segment column), and per-file values are written "
+          "one model per file; fit the tests with shared parameters (a command column gives each "
+          "its own level through the command law), or split the file",
+          fmt::join(flags.per_file, ","), file, run.records.size() - before));
+    }
   }
   fitting::HysteresisFitOptions options;
   options.free = flags.free;
@@ -135,6 +172,12 @@ HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
   options.max_iterations = flags.max_iterations;
   options.max_nrmse_percent = flags.max_nrmse_percent;
   check_flag_combinations(flags, options);
+  if (!flags.validate_files.empty() && !flags.per_file.empty()) {
+    throw InputError(fmt::format(
+        "--validate with --per-file {}: a held-out record has no value of its own of a per-file "
+        "parameter; leave one of them out",
+        fmt::join(flags.per_file, ",")));
+  }
   // From the model file's values (with --start) and from levels read off the records.
   std::string chosen;
   run.fit = fitting::fit_hysteresis_from_file_and_records(
@@ -145,6 +188,7 @@ HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
   std::vector<double> compression_m;
   for (double mm : flags.compression_mm) compression_m.push_back(1e-3 * mm);
   run.report = fitting::report_hysteresis_fit(run.records, run.fit, chosen, compression_m);
+  run.validation = validate(flags, run, options.solver);
   return run;
 }
 
@@ -154,6 +198,7 @@ HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
 CommandOutcome outcome_of(const FitHysteresisFlags& flags, const HysteresisFitRun& run) {
   CommandOutcome outcome;
   outcome.summary = fitting::summary_json(run.fit, run.report);
+  if (!run.validation.empty()) outcome.summary["validation"] = validation_json(run.validation);
   if (!run.fit.explains_data) outcome.failure = run.fit.adequacy_note;
   if (!run.fit.explains_data && !flags.keep) return outcome;
   const bool per_file = flags.files.size() > 1 && !flags.per_file.empty();
@@ -173,6 +218,7 @@ void run(const FitHysteresisFlags& flags) {
         "{} is given twice; a repeated record would count twice in the fit", repeated->string()));
   }
   std::vector<std::filesystem::path> inputs(flags.files.begin(), flags.files.end());
+  inputs.insert(inputs.end(), flags.validate_files.begin(), flags.validate_files.end());
   inputs.push_back(flags.model_file);
   // With per-file parameters and several files, one model per file: -o's stem + the file's.
   std::vector<std::string> model_outputs;
@@ -208,6 +254,14 @@ void run(const FitHysteresisFlags& flags) {
     std::cout << j.dump(2) << "\n";
   } else {
     fitting::write_summary(std::cout, fitted.fit, fitted.report);
+    for (const auto& p : fitted.validation) {
+      std::cout << fmt::format("  validation: NRMSE {:6.2f} % (residual RMS {:.4g} N{})  {}\n",
+                               p.nrmse_percent, p.residual_rms_N,
+                               p.score_from_s > 0.0
+                                   ? fmt::format(", scored from {:g} s", p.score_from_s)
+                                   : std::string(),
+                               p.source);
+    }
     for (const auto& path : written) std::cout << "Fitted model: " << path << "\n";
     if (!flags.plot_file.empty()) std::cout << "Figure: " << flags.plot_file << "\n";
   }
@@ -260,6 +314,17 @@ void add_fit_options(CLI::App& command, FitHysteresisFlags& flags) {
                   "Spring compression [mm] per file: fits Fc against it (seed 000 Figure 4; "
                   "needs --per-file coulomb_force_N)")
       ->delimiter(',');
+  command
+      .add_option("--validate", flags.validate_files,
+                  "Held-out rig tests (CSV or .mat) the fitted strut predicts, each scored by its "
+                  "NRMSE (not fitted)")
+      ->check(CLI::ExistingFile);
+  command
+      .add_option("--validate-from", flags.validate_from_s,
+                  "Score the held-out tests from this time [s] on (the model runs from their "
+                  "start), e.g. the second half of a record whose first half was fitted")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   add_verdict_options(command, "NRMSE", flags.max_nrmse_percent, flags.keep);
 }
 

@@ -11,6 +11,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_adequacy.h"
+#include "ridefit/fitting/hysteresis_prediction.h"
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/fitting/strut_parameters.h"
 
@@ -49,8 +50,9 @@ struct RecordResidual {
       strut_parameter(p, fields[b]) = blocks[b][0] * T(units[b]);
       strut_parameter(v, fields[b]) = value_of(blocks[b][0]) * units[b];
     }
-    const auto force = simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v,
-                                                     solver, record->command);
+    const auto force =
+        simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v, solver,
+                                      record->command, record->velocity_m_per_s);
     if (!force) return false;
     for (std::size_t k = 0; k < force->size(); ++k) {
       residuals[k] = (*force)[k] - T(record->force_N[k]);
@@ -105,6 +107,7 @@ void assess_adequacy(const std::vector<HysteresisRecord>& records,
   for (std::size_t r = 0; r < records.size(); ++r) {
     const auto& measured = records[r].force_N;
     const auto& fitted = result.fitted_force_N[r];
+    result.record_nrmse_percent.push_back(nrmse_percent(measured, fitted));
     if (fitted.size() != measured.size()) continue;
     double mean = 0.0;
     for (double f : measured) mean += f / static_cast<double>(measured.size());
@@ -266,11 +269,21 @@ ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
   return make_cost(functor, static_cast<int>(free.size()), static_cast<int>(record.force_N.size()));
 }
 
+double largest_force_N(const std::vector<HysteresisRecord>& records) {
+  double largest = 0.0;
+  for (const auto& r : records) {
+    for (double f : r.force_N) largest = std::max(largest, std::abs(f));
+  }
+  return largest;
+}
+
 HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
                                    const model::StrutTestParameters<double>& start,
-                                   const HysteresisFitOptions& options) {
+                                   const HysteresisFitOptions& given_options) {
   if (records.empty()) throw InputError("fit: no data file given");
-  options.validate();
+  given_options.validate();
+  HysteresisFitOptions options = given_options;
+  if (options.force_scale_N == 0.0) options.force_scale_N = largest_force_N(records);
   const bool any_command = std::any_of(
       records.begin(), records.end(), [](const HysteresisRecord& r) { return !r.command.empty(); });
   for (const auto& name : options.free) {
@@ -427,9 +440,9 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
       }
     }
     result.fitted.push_back(fitted);
-    const auto force =
-        simulate::strut_test_force<double>(records[r].time_s, records[r].displacement_m, fitted,
-                                           fitted, options.solver, records[r].command);
+    const auto force = simulate::strut_test_force<double>(
+        records[r].time_s, records[r].displacement_m, fitted, fitted, options.solver,
+        records[r].command, records[r].velocity_m_per_s);
     result.fitted_force_N.push_back(force ? *force : std::vector<double>());
   }
   assess_adequacy(records, bounds, blocks, options.max_nrmse_percent, result);

@@ -42,6 +42,8 @@ struct HysteresisFitResult {
   // is above max_nrmse_percent, or when parameters end on bounds while the data leave some
   // parameters undetermined (a collapsed fit: the model gave up a mechanism to imitate another).
   double nrmse_percent = 0.0;
+  // Each record's own NRMSE (%; its residual over its own force's spread), in record order.
+  std::vector<double> record_nrmse_percent;
   std::vector<std::string> on_bounds;
   bool explains_data = true;
   std::string adequacy_note;                               // why not, in words ("" when it does)
@@ -63,6 +65,9 @@ ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
                                           const model::StrutTestParameters<double>& base,
                                           const std::vector<std::string>& free,
                                           const simulate::StrutTestSolverOptions& solver = {});
+
+// The largest force magnitude in the records [N] (HysteresisFitOptions::force_scale_N).
+double largest_force_N(const std::vector<HysteresisRecord>& records);
 
 HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
                                    const model::StrutTestParameters<double>& start,

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -49,6 +50,17 @@ HysteresisFitOptions::resolved_bounds() const {
   std::array<std::pair<double, double>, kStrutParameters.size()> resolved;
   for (std::size_t i = 0; i < kStrutParameters.size(); ++i) {
     resolved[i] = {kStrutParameters[i].lower, kStrutParameters[i].upper};
+  }
+  // Force levels scale with the records' force: [lower, upper] widened to ±5× the largest force.
+  namespace qc = model::quarter_car_rows;
+  namespace rig = model::strut_rig_rows;
+  const double level = 5.0 * force_scale_N;
+  for (const model::ParameterInfo* row :
+       {&qc::coulomb_force_N, &qc::static_friction_force_N, &qc::coulomb_force_per_command_N,
+        &rig::gas_force_N, &rig::force_offset_N}) {
+    auto& [lo, hi] = resolved[strut_parameter_index(row->key)];
+    hi = std::max(hi, level);
+    if (lo < 0.0) lo = std::min(lo, -level);
   }
   for (const auto& [name, bound] : bounds) resolved[strut_parameter_index(name)] = bound;
   return resolved;

@@ -25,13 +25,19 @@ struct HysteresisFitOptions {
   // Above this NRMSE (%, the residual's RMS over the measured force's spread about its mean) the
   // fitted model is flagged as not explaining the data.
   double max_nrmse_percent = 10.0;
+  // The records' largest force magnitude [N] (0: not known). The default bounds of the force
+  // levels (friction, breakaway, the command's friction slope, gas force, offset) are wide enough
+  // for a passenger-car strut; a 10 kN friction damper needs more, so they widen to 5× this where
+  // it is larger. fit_hysteresis fills it from its records when it is 0. Explicit `bounds` win.
+  double force_scale_N = 0.0;
 
   // InputError naming the option for: no free parameter, an unknown or repeated one, a per-file
   // parameter that is not free, bounds of an unknown parameter or with lower >= upper or not
   // finite, a loss scale or NRMSE threshold that is not > 0, a negative iteration limit.
   void validate() const;
 
-  // Every strut parameter's bounds: kStrutParameters' defaults with `bounds` applied.
+  // Every strut parameter's bounds: kStrutParameters' defaults, widened for force_scale_N, with
+  // `bounds` applied.
   std::array<std::pair<double, double>, kStrutParameters.size()> resolved_bounds() const;
 };
 

@@ -37,6 +37,11 @@ void write_summary(std::ostream& out, const HysteresisFitResult& fit,
                        p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : "-",
                        p.file.empty() ? "" : "  " + p.file);
   }
+  if (report.sources.size() > 1) {
+    for (std::size_t r = 0; r < report.sources.size() && r < fit.record_nrmse_percent.size(); ++r) {
+      out << fmt::format("  NRMSE {:6.2f} %  {}\n", fit.record_nrmse_percent[r], report.sources[r]);
+    }
+  }
   for (std::size_t r = 0; r < report.sources.size(); ++r) {
     const auto& calibration = report.calibration[r];
     if (!calibration) continue;
@@ -79,6 +84,11 @@ nlohmann::json summary_json(const HysteresisFitResult& fit, const HysteresisFitR
                                {"file", p.file},
                                {"value", p.value},
                                {"standard_error", number_or_null(p.standard_error)}});
+  }
+  j["records"] = nlohmann::json::array();
+  for (std::size_t r = 0; r < report.sources.size() && r < fit.record_nrmse_percent.size(); ++r) {
+    j["records"].push_back(
+        {{"file", report.sources[r]}, {"nrmse_percent", fit.record_nrmse_percent[r]}});
   }
   for (std::size_t r = 0; r < report.sources.size(); ++r) {
     const auto& calibration = report.calibration[r];

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ridefit::fitting {
@@ -16,13 +17,32 @@ struct HysteresisRecord {
   // "A" for a `current` column (A or mA in the file), "V" for a `voltage` column (V or mV).
   std::vector<double> command;
   std::string command_unit;
+  // The rig's own velocity at the same samples (a `velocity[m/s]` column), empty when the record
+  // has none: the model then runs on it rather than on a derivative of quantised displacement.
+  std::vector<double> velocity_m_per_s{};
 };
 
-// Reads `time[...]`, `displacement[...]`, `force[...]` columns in any supported units, and an
-// optional command column `current[A|mA]` or `voltage[V|mV]`. InputError (naming file, row,
+// Reads `time[...]`, `displacement[...]`, `force[...]` columns in any supported units, an
+// optional command column `current[A|mA]` or `voltage[V|mV]` and an optional `velocity[m/s]`;
+// other columns are ignored. InputError (naming file, row,
 // column) for a missing column, a time that does not increase, fewer than 20 samples, a
 // displacement that never moves or a force that never changes (signal/signal_presence.h: nothing
 // to identify), both a current and a voltage column, or a command in the wrong kind of unit.
 HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file);
+
+// The tests a rig file holds. Without a `segment` (or `test`) column: the whole file, as
+// load_hysteresis_record. With one: a record per test (the column's whole numbers, each test's
+// rows together; the time may run on across the pauses between them), named "FILE (segment N)",
+// each cut to the part where the actuator moves (moving_rows) so that it starts from its own rest
+// state and the rest samples are not fitted. InputError, naming file, row and column, for a test
+// number that is not whole, a test whose rows are split, and a test that moves through less than
+// one cycle.
+std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path& file);
+
+// The rows [first, last) where the actuator moves: the rest before the motion starts and after it
+// ends cut off (the displacement within 1 % of the stroke of its first or last value, back to
+// where it left rest by more than a few quantisation steps), one rest sample kept on each side.
+// The whole record when it never rests.
+std::pair<std::size_t, std::size_t> moving_rows(const HysteresisRecord& record);
 
 }  // namespace ridefit::fitting

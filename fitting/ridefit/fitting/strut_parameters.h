@@ -34,7 +34,8 @@ struct StrutParameterInfo {
 // The controlled damper's slopes act only with a command column; its lag τ only when > 0 (0 is
 // below its bound: fitting it needs a start). The load cell's chain (gain, delay, cutoff) is
 // rig-only; a cutoff of 0 is off and below its bound likewise.
-inline constexpr std::array<StrutParameterInfo, 16> kStrutParameters{{
+// Free play's 0 is off and below its bound likewise.
+inline constexpr std::array<StrutParameterInfo, 24> kStrutParameters{{
     {&model::quarter_car_rows::dahl_sigma0_N_per_m, 1e3, 1e10, true},
     {&model::quarter_car_rows::coulomb_force_N, 0.0, 1e4, true},
     {&model::quarter_car_rows::dahl_exponent, 0.2, 5.0, true},
@@ -51,6 +52,15 @@ inline constexpr std::array<StrutParameterInfo, 16> kStrutParameters{{
     {&model::strut_rig_rows::force_gain, 0.5, 2.0, false},
     {&model::strut_rig_rows::force_delay_s, 0.0, 0.1, false},
     {&model::strut_rig_rows::force_sensor_cutoff_Hz, 1.0, 1e5, false},
+    {&model::quarter_car_rows::friction_compression_to_rebound_ratio, 0.2, 5.0, true},
+    {&model::quarter_car_rows::free_play_m, 1e-5, 0.1, true},
+    // The rest of the quarter car's damper path (a knee of 0 is off and below its bound).
+    {&model::quarter_car_rows::compression_to_rebound_ratio, 0.1, 10.0, true},
+    {&model::quarter_car_rows::damper_knee_velocity_m_per_s, 1e-4, 5.0, true},
+    {&model::quarter_car_rows::damping_above_knee_Ns_per_m, 1.0, 1e6, true},
+    {&model::quarter_car_rows::top_mount_small_amplitude_stiffness_N_per_m, 1e3, 1e10, true},
+    {&model::quarter_car_rows::top_mount_transition_deflection_m, 1e-7, 0.1, true},
+    {&model::quarter_car_rows::command_exponent, 0.2, 3.0, true},
 }};
 
 // The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas
@@ -108,8 +118,24 @@ T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
       return p.force_gain;
     case 14:
       return p.force_delay_s;
-    default:
+    case 15:
       return p.force_sensor_cutoff_Hz;
+    case 16:
+      return p.friction_compression_to_rebound_ratio;
+    case 17:
+      return p.free_play_m;
+    case 18:
+      return p.compression_to_rebound_ratio;
+    case 19:
+      return p.damper_knee_velocity_m_per_s;
+    case 20:
+      return p.damping_above_knee_Ns_per_m;
+    case 21:
+      return p.top_mount_small_amplitude_stiffness_N_per_m;
+    case 22:
+      return p.top_mount_transition_deflection_m;
+    default:
+      return p.command_exponent;
   }
 }
 

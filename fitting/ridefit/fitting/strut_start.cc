@@ -91,7 +91,61 @@ std::map<std::string, double> estimate_strut_start(const std::vector<HysteresisR
     }
     estimate[names[i]] = value;
   }
+  const auto friction = estimate.find(qc::coulomb_force_N.key_string());
+  if (friction != estimate.end()) {
+    if (const auto sigma0 = estimate_pre_sliding_stiffness(records, friction->second)) {
+      estimate[qc::dahl_sigma0_N_per_m.key_string()] = *sigma0;
+    }
+  }
   return estimate;
+}
+
+std::optional<double> estimate_pre_sliding_stiffness(const std::vector<HysteresisRecord>& records,
+                                                     double friction_N) {
+  if (!(friction_N > 0.0)) return std::nullopt;
+  std::vector<double> slopes;
+  for (const auto& r : records) {
+    const auto& x = r.displacement_m;
+    const auto& f = r.force_N;
+    const std::size_t n = x.size();
+    const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+    // A reversal: x turns by more than 2 % of the stroke (quantisation at a turning point does
+    // not count). From it, the secant to where the force has moved by Fc.
+    const double turn = 0.02 * (*hi - *lo);
+    std::size_t extreme = 0;
+    int direction = 0;
+    for (std::size_t k = 1; k < n; ++k) {
+      const double d = x[k] - x[extreme];
+      if (direction >= 0 && x[k] > x[extreme]) {
+        extreme = k;
+        direction = 1;
+        continue;
+      }
+      if (direction <= 0 && x[k] < x[extreme]) {
+        extreme = k;
+        direction = -1;
+        continue;
+      }
+      if (std::abs(d) < turn || direction == 0) continue;
+      // x has turned at `extreme`: follow the force from there.
+      for (std::size_t j = extreme + 1; j < n; ++j) {
+        const double dx = std::abs(x[j] - x[extreme]);
+        if (std::abs(f[j] - f[extreme]) >= friction_N) {
+          // Dahl from a reversal (d = 1): ΔF = 2Fc(1 − exp(−σ0·Δx/(2Fc))), ΔF = Fc at
+          // Δx = 2·ln 2·Fc/σ0, so σ0 = 2·ln 2 × the secant there.
+          if (dx > 0.0) slopes.push_back(2.0 * std::log(2.0) * friction_N / dx);
+          break;
+        }
+        if (dx > 4.0 * turn) break;  // no clear pre-sliding branch
+      }
+      direction = -direction;
+      extreme = k;
+    }
+  }
+  if (slopes.size() < 2) return std::nullopt;
+  std::nth_element(slopes.begin(), slopes.begin() + static_cast<std::ptrdiff_t>(slopes.size() / 2),
+                   slopes.end());
+  return slopes[slopes.size() / 2];
 }
 
 model::StrutTestParameters<double> with_estimates(model::StrutTestParameters<double> base,
@@ -115,12 +169,16 @@ constexpr int kRaceIterations = 4;
 HysteresisFitResult fit_hysteresis_from_starts(
     const std::vector<HysteresisRecord>& records,
     const std::vector<model::StrutTestParameters<double>>& starts,
-    const HysteresisFitOptions& options, const std::vector<std::string>& start_labels,
+    const HysteresisFitOptions& given_options, const std::vector<std::string>& start_labels,
     std::string* chosen) {
+  HysteresisFitOptions options = given_options;
+  if (options.force_scale_N == 0.0) options.force_scale_N = largest_force_N(records);
+  const auto bounds = options.resolved_bounds();
   std::vector<std::size_t> free;
   for (const auto& name : options.free) free.push_back(strut_parameter_index(name));
   std::vector<std::vector<double>> seen;
-  std::optional<HysteresisFitResult> best;
+  // Each start's first result (a few iterations when racing), with its label.
+  std::vector<std::pair<HysteresisFitResult, std::string>> tried;
   std::string failure;
   // With several starts and shared parameters, every start gets a few iterations first and only
   // the lowest cost is fitted on to convergence: the starts differ in where they begin, not in
@@ -131,11 +189,8 @@ HysteresisFitResult fit_hysteresis_from_starts(
   if (race) first_steps.max_iterations = kRaceIterations;
   auto clamp_free = [&](model::StrutTestParameters<double>& start) {
     for (std::size_t index : free) {
-      double lo = kStrutParameters[index].lower, hi = kStrutParameters[index].upper;
-      const auto bound = options.bounds.find(std::string(kStrutParameters[index].name()));
-      if (bound != options.bounds.end()) std::tie(lo, hi) = bound->second;
       double& value = strut_parameter(start, index);
-      value = std::clamp(value, lo, hi);
+      value = std::clamp(value, bounds[index].first, bounds[index].second);
     }
   };
   for (std::size_t s = 0; s < starts.size(); ++s) {
@@ -148,27 +203,47 @@ HysteresisFitResult fit_hysteresis_from_starts(
     if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
     seen.push_back(key);
     try {
-      HysteresisFitResult fit = fit_hysteresis(records, start, race ? first_steps : options);
-      if (!best || fit.final_cost < best->final_cost) {
-        best = std::move(fit);
-        if (chosen != nullptr) *chosen = s < start_labels.size() ? start_labels[s] : "";
-      }
+      tried.emplace_back(fit_hysteresis(records, start, race ? first_steps : options),
+                         s < start_labels.size() ? start_labels[s] : "");
     } catch (const RunError& e) {
       failure = e.what();
     }
   }
-  if (!best) throw RunError(failure.empty() ? "fit: no start to fit from" : failure);
-  if (race && !best->converged && !best->fitted.empty()) {
-    const int first_iterations = best->iterations;
-    // Bounds derived from the data (a Stribeck level above Fc) move with the values, so the
-    // iterate may sit a rounding error outside them.
-    model::StrutTestParameters<double> from = best->fitted.front();
-    clamp_free(from);
-    HysteresisFitResult rest = fit_hysteresis(records, from, options);
-    rest.iterations += first_iterations;
-    return rest;
+  if (tried.empty()) throw RunError(failure.empty() ? "fit: no start to fit from" : failure);
+  std::stable_sort(tried.begin(), tried.end(), [](const auto& a, const auto& b) {
+    return a.first.final_cost < b.first.final_cost;
+  });
+  // The best start fitted on to convergence; when it ends on a bound (a collapse, or a mechanism
+  // traded for another), the next ones too, before the collapse is reported: the fit kept is the
+  // lowest cost off the bounds, else the lowest cost.
+  std::optional<HysteresisFitResult> kept;
+  for (auto& [first, label] : tried) {
+    HysteresisFitResult fit = std::move(first);
+    if (race && !fit.converged && !fit.fitted.empty()) {
+      const int first_iterations = fit.iterations;
+      // Bounds derived from the data (a Stribeck level above Fc) move with the values, so the
+      // iterate may sit a rounding error outside them.
+      model::StrutTestParameters<double> from = fit.fitted.front();
+      clamp_free(from);
+      try {
+        fit = fit_hysteresis(records, from, options);
+      } catch (const RunError& e) {
+        failure = e.what();
+        continue;
+      }
+      fit.iterations += first_iterations;
+    }
+    const bool better = !kept || (kept->on_bounds.empty() == fit.on_bounds.empty()
+                                      ? fit.final_cost < kept->final_cost
+                                      : fit.on_bounds.empty());
+    if (better) {
+      kept = std::move(fit);
+      if (chosen != nullptr) *chosen = label;
+    }
+    if (kept->on_bounds.empty()) break;
   }
-  return *best;
+  if (!kept) throw RunError(failure);
+  return *kept;
 }
 
 HysteresisFitResult fit_hysteresis_from_file_and_records(

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,13 +19,23 @@ namespace ridefit::fitting {
 // with a command column). Quantities the records cannot separate are left out: on a constant-speed
 // triangle |v| hardly varies, v and sgn(v) are collinear and only the friction is estimated, since
 // a constant-speed test shows a force level, not a slope. Negative damping or friction is dropped.
-// The top-mount stiffness and σ0 are not estimated (they show only in the few samples after each
-// reversal). Keys are kStrutParameters names.
+// σ0 comes from the force's rise after each reversal (estimate_pre_sliding_stiffness) once Fc is
+// known; the top-mount stiffness is not estimated (in series with σ0, the rise shows their series
+// value). Keys are kStrutParameters names.
 std::map<std::string, double> estimate_strut_start(const std::vector<HysteresisRecord>& records);
+
+// The pre-sliding (Dahl) stiffness σ0 [N/m] read off the records: after each reversal (the
+// displacement turning by more than 2 % of its stroke), the secant from the reversal to where the
+// force has moved by `friction_N`, times 2·ln 2 (Dahl's law from a reversal reaches Fc there); the
+// median over reversals. None with fewer than two reversals that show it.
+std::optional<double> estimate_pre_sliding_stiffness(const std::vector<HysteresisRecord>& records,
+                                                     double friction_N);
 
 // Fits from each start (the same free parameters and options) and keeps the lowest final cost.
 // Without per-file parameters each start first gets four iterations, and only the lowest cost
-// then is fitted on to convergence (its iterations counted in).
+// then is fitted on to convergence (its iterations counted in); when that fit ends with a
+// parameter on a bound, the next starts are fitted on too, and the lowest cost with no parameter
+// on a bound is kept (the lowest cost when every start ends on one).
 // Starts whose free values equal an earlier start's are skipped; a start outside the bounds is
 // moved inside them; a start the model cannot be solved at is skipped (RunError only when every
 // start fails). `start_labels` (same size as `starts`, may be empty) name the starts; the winner's

@@ -119,6 +119,15 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
   }
 }
 
+// 6b. Dry-friction devices: the friction's direction ratio (default 1) and free play (default 0).
+void read_dry_friction_effects(const YamlMap& file, model::QuarterCarParameters<double>& p) {
+  if (file.has(rows::friction_compression_to_rebound_ratio)) {
+    p.friction_compression_to_rebound_ratio =
+        file.parameter(rows::friction_compression_to_rebound_ratio);
+  }
+  if (file.has(rows::free_play_m)) p.free_play_m = file.parameter(rows::free_play_m);
+}
+
 // 6. Controlled damper: each key optional (0 = off).
 void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<double>& p) {
   if (file.has(rows::damping_per_command_Ns_per_m)) {
@@ -128,6 +137,7 @@ void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<dou
     p.coulomb_force_per_command_N = file.parameter(rows::coulomb_force_per_command_N);
   }
   if (file.has(rows::command_lag_s)) p.command_lag_s = file.parameter(rows::command_lag_s);
+  if (file.has(rows::command_exponent)) p.command_exponent = file.parameter(rows::command_exponent);
 }
 
 // 7. The accelerometers' measuring chain (acceleration_sensors.h), each key optional: gains
@@ -193,6 +203,7 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
   }
   read_optional_effects(file, p);
   read_controlled_damper(file, p);
+  read_dry_friction_effects(file, p);
   read_acceleration_sensors(file, p.sensors);
   file.finish();
   return result;

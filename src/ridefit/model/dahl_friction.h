@@ -26,20 +26,27 @@ namespace ridefit::model {
 // Fs near rest, Fc at speed. Fc(v) ≥ Fc > 0 keeps the division safe; the right-hand side stays
 // continuous at v = 0 (still multiplied by v). v_s = 0 (the default) is the classic law, bit for
 // bit. The element is active only with Fc > 0.
+//
+// Optional asymmetry: the level in compression (v < 0) is r times the level in rebound (v > 0),
+// r = compression_to_rebound_ratio (a dry-friction device whose sliding force differs with the
+// direction; 1, the default, is symmetric). The law is still multiplied by v, so the right-hand
+// side stays continuous at v = 0.
 template <typename T>
 struct DahlFriction {
   T sigma0_N_per_m;
   T coulomb_force_N;
   T exponent;
-  T static_friction_force_N{0.0};    // Fs, read only when v_s > 0
-  T stribeck_velocity_m_per_s{0.0};  // v_s; 0 = no velocity dependence
+  T static_friction_force_N{0.0};       // Fs, read only when v_s > 0
+  T stribeck_velocity_m_per_s{0.0};     // v_s; 0 = no velocity dependence
+  T compression_to_rebound_ratio{1.0};  // r: compression level over rebound level
 
   bool active() const { return coulomb_force_N > 0.0; }
 
   // The sliding level Fc(v) [N] (Fc without the Stribeck keys).
   T level_N(const T& velocity_m_per_s) const {
-    return stribeck_level_N(coulomb_force_N, static_friction_force_N, stribeck_velocity_m_per_s,
-                            velocity_m_per_s);
+    const T level = stribeck_level_N(coulomb_force_N, static_friction_force_N,
+                                     stribeck_velocity_m_per_s, velocity_m_per_s);
+    return velocity_m_per_s < 0.0 ? T(level * compression_to_rebound_ratio) : level;
   }
 
   T force_rate_N_per_s(const T& force_N, const T& velocity_m_per_s) const {

@@ -58,6 +58,12 @@ struct QuarterCarParameters {
   // spectral comparisons apply to the simulated PSDs; the motion never depends on them. Ideal by
   // default.
   AccelerationSensors<T> sensors{};
+  // Dry-friction devices: the Dahl level in compression over that in rebound (dahl_friction.h;
+  // 1 symmetric) and free play in series with the damper path (free_play.h; 0 none).
+  T friction_compression_to_rebound_ratio{1.0};
+  T free_play_m{0.0};
+  // A controlled damper's command shape: levels affine in ū^p (strut_damper_path.h); 1 affine.
+  T command_exponent{1.0};
 
   template <typename U>
   QuarterCarParameters<U> cast() const {
@@ -86,7 +92,10 @@ struct QuarterCarParameters {
             U(damping_per_command_Ns_per_m),
             U(coulomb_force_per_command_N),
             U(command_lag_s),
-            sensors.template cast<U>()};
+            sensors.template cast<U>(),
+            U(friction_compression_to_rebound_ratio),
+            U(free_play_m),
+            U(command_exponent)};
   }
 
   // Coil spring in series with the top mount's spring path.
@@ -101,23 +110,7 @@ struct QuarterCarParameters {
   // coefficient and the friction level; the compression ratio, the knee's share and the Stribeck
   // excess over Fc stay as they are.
   StrutDamperPath<T> damper_path(const T& command = T(0.0)) const {
-    T c = damping_Ns_per_m;
-    T fc = coulomb_force_N;
-    T above_knee = damping_above_knee_Ns_per_m;
-    if (commanded()) {
-      const CommandedLevels<T> levels =
-          commanded_levels(damping_Ns_per_m, coulomb_force_N, damping_per_command_Ns_per_m,
-                           coulomb_force_per_command_N, command);
-      if (damper_knee_velocity_m_per_s > 0.0)
-        above_knee = above_knee * (levels.damping_Ns_per_m / c);
-      c = levels.damping_Ns_per_m;
-      fc = levels.coulomb_force_N;
-    }
-    return {{top_mount_stiffness_N_per_m, top_mount_small_amplitude_stiffness_N_per_m,
-             top_mount_transition_deflection_m},
-            {c, compression_to_rebound_ratio, damper_knee_velocity_m_per_s, above_knee},
-            {dahl_sigma0_N_per_m, fc, dahl_exponent,
-             static_friction_force_N + (fc - coulomb_force_N), stribeck_velocity_m_per_s}};
+    return damper_path_of(*this, command);
   }
   BumpStop<T> bump_stop() const {
     return {bump_stop_stiffness_N_per_m, bump_stop_clearance_m, bump_stop_exponent};

@@ -16,7 +16,7 @@ namespace ridefit::model {
 // the keys they share. tyre_lift_off and acc_sensor_order are switches, not parameters, and are
 // not listed; neither is the damper state (the topology). The last three rows are the
 // accelerometers' measuring chain (acceleration_sensors.h), not physics.
-inline constexpr std::array<ParameterInfo, 27> kQuarterCarParameters{{
+inline constexpr std::array<ParameterInfo, 30> kQuarterCarParameters{{
     {"sprung_mass_kg", "kg", 0.0, 1e5, true, false, "body mass carried by the corner"},
     {"unsprung_mass_kg", "kg", 0.0, 1e5, true, false, "wheel, hub, brake and strut body"},
     {"tyre_stiffness_N_per_m", "N/m", 0.0, 1e10, true, false, "tyre vertical stiffness"},
@@ -58,6 +58,14 @@ inline constexpr std::array<ParameterInfo, 27> kQuarterCarParameters{{
     {"wheel_acc_gain", "1", 0.0, 10.0, true, false, "measured over true wheel acceleration"},
     {"acc_sensor_cutoff_Hz", "Hz", 0.0, 1e5, false, false,
      "accelerometer low-pass corner; 0 = none"},
+    // Dry-friction devices (the real friction damper's records): levels that differ with the
+    // direction, and slack in series with the damper path.
+    {"friction_compression_to_rebound_ratio", "1", 0.0, 10.0, true, false,
+     "Dahl sliding level in compression over that in rebound (default 1)"},
+    {"free_play_m", "m", 0.0, 1.0, false, false,
+     "free play (backlash) in series with the damper path, total width; 0 = none"},
+    {"command_exponent", "1", 0.0, 10.0, true, false,
+     "controlled damper: levels affine in the command to this power (default 1)"},
 }};
 
 // Each row by name, for code that means one parameter: quarter_car_rows::coulomb_force_N is the
@@ -93,6 +101,10 @@ inline constexpr const ParameterInfo& command_lag_s = kQuarterCarParameters[23];
 inline constexpr const ParameterInfo& body_acc_gain = kQuarterCarParameters[24];
 inline constexpr const ParameterInfo& wheel_acc_gain = kQuarterCarParameters[25];
 inline constexpr const ParameterInfo& acc_sensor_cutoff_Hz = kQuarterCarParameters[26];
+inline constexpr const ParameterInfo& friction_compression_to_rebound_ratio =
+    kQuarterCarParameters[27];
+inline constexpr const ParameterInfo& free_play_m = kQuarterCarParameters[28];
+inline constexpr const ParameterInfo& command_exponent = kQuarterCarParameters[29];
 }  // namespace quarter_car_rows
 
 // Index of `key` in kQuarterCarParameters, or none.
@@ -137,7 +149,10 @@ T& quarter_car_parameter(QuarterCarParameters<T>& p, std::size_t index) {
                        &p.command_lag_s,
                        &p.sensors.body_acc_gain,
                        &p.sensors.wheel_acc_gain,
-                       &p.sensors.acc_sensor_cutoff_Hz};
+                       &p.sensors.acc_sensor_cutoff_Hz,
+                       &p.friction_compression_to_rebound_ratio,
+                       &p.free_play_m,
+                       &p.command_exponent};
   static_assert(sizeof(fields) / sizeof(fields[0]) == kQuarterCarParameters.size());
   return *fields[index];
 }

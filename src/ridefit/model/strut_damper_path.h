@@ -3,6 +3,7 @@
 #include "ridefit/model/amplitude_stiffening_spring.h"
 #include "ridefit/model/asymmetric_damper.h"
 #include "ridefit/model/dahl_friction.h"
+#include "ridefit/model/free_play.h"
 
 namespace ridefit::model {
 
@@ -32,11 +33,16 @@ enum class DamperState {
 // is then a smooth monotone function of the top-mount deflection instead of k_tm·(z − z_c). It is
 // still computed from the states first, in every topology (stick: F_tm(z); slip and stick/slip:
 // F_tm(z − z_c)), and z_c' follows from it explicitly as before.
+//
+// The path may have free play (free_play.h) in series: the top mount then deflects by
+// D(z − z_c), the dead zone of the path's deflection, and carries no force while the slack is
+// crossed.
 template <typename T>
 struct StrutDamperPath {
   AmplitudeStiffeningSpring<T> top_mount;
   AsymmetricDamper<T> damper;
   DahlFriction<T> friction;
+  T free_play_m{0.0};  // b; 0 = none
 
   // Internal states this path adds to a model.
   static int state_count(DamperState state) {
@@ -52,7 +58,8 @@ struct StrutDamperPath {
   }
 
   T path_force_N(const T& travel_m, const T& damper_deflection_m) const {
-    return top_mount.force_N(travel_m - damper_deflection_m);
+    return top_mount.force_N(
+        free_play_deflection_m(T(travel_m - damper_deflection_m), free_play_m));
   }
 
   // Damper deflection rate z_c' for a given path force and friction force.
@@ -62,9 +69,12 @@ struct StrutDamperPath {
 };
 
 // A controlled (semi-active) damper's levels at the filtered command ū: damping and friction
-// level affine in it, c = c_a + c_b·ū and Fc = Fc_a + Fc_b·ū. The damping is kept at least 1 % of
-// c_a and the friction level at least 0, so that a fit exploring a steep negative slope (or a
-// command beyond the data sheet's range) cannot make the damper's law singular.
+// level affine in the command's shape ū^p (p = command_exponent; 1, the default, is affine in ū:
+// an MR damper's yield force saturates with its coil's field, p < 1, or grows faster than the
+// current at low currents, p > 1), c = c_a + c_b·ū^p and Fc = Fc_a + Fc_b·ū^p (sgn ū·|ū|^p for a
+// negative command). The damping is kept at least 1 % of c_a and the friction level at least 0,
+// so that a fit exploring a steep negative slope (or a command beyond the data sheet's range)
+// cannot make the damper's law singular.
 template <typename T>
 struct CommandedLevels {
   T damping_Ns_per_m;
@@ -74,12 +84,42 @@ struct CommandedLevels {
 template <typename T>
 CommandedLevels<T> commanded_levels(const T& damping_Ns_per_m, const T& coulomb_force_N,
                                     const T& damping_per_command_Ns_per_m,
-                                    const T& coulomb_force_per_command_N, const T& command) {
-  T c = damping_Ns_per_m + damping_per_command_Ns_per_m * command;
+                                    const T& coulomb_force_per_command_N, const T& command,
+                                    const T& command_exponent = T(1.0)) {
+  const T shaped = command_exponent == 1.0 ? command : signed_power(command, command_exponent);
+  T c = damping_Ns_per_m + damping_per_command_Ns_per_m * shaped;
   if (c < 0.01 * damping_Ns_per_m) c = T(0.01) * damping_Ns_per_m;
-  T fc = coulomb_force_N + coulomb_force_per_command_N * command;
+  T fc = coulomb_force_N + coulomb_force_per_command_N * shaped;
   if (fc < 0.0) fc = T(0.0);
   return {c, fc};
+}
+
+// The damper path of a parameter set at a filtered command ū, written once for every model that
+// carries a strut (the quarter car's QuarterCarParameters and the rig's StrutTestParameters name
+// their fields alike): the command moves the rebound coefficient and the friction level; the
+// compression ratio, the knee's share of the damping and the Stribeck excess over Fc stay as they
+// are.
+template <typename T, typename Parameters>
+StrutDamperPath<T> damper_path_of(const Parameters& p, const T& command) {
+  T c = p.damping_Ns_per_m;
+  T fc = p.coulomb_force_N;
+  T above_knee = p.damping_above_knee_Ns_per_m;
+  if (p.commanded()) {
+    const CommandedLevels<T> levels =
+        commanded_levels(p.damping_Ns_per_m, p.coulomb_force_N, p.damping_per_command_Ns_per_m,
+                         p.coulomb_force_per_command_N, command, p.command_exponent);
+    if (p.damper_knee_velocity_m_per_s > 0.0)
+      above_knee = above_knee * (levels.damping_Ns_per_m / c);
+    c = levels.damping_Ns_per_m;
+    fc = levels.coulomb_force_N;
+  }
+  return {{p.top_mount_stiffness_N_per_m, p.top_mount_small_amplitude_stiffness_N_per_m,
+           p.top_mount_transition_deflection_m},
+          {c, p.compression_to_rebound_ratio, p.damper_knee_velocity_m_per_s, above_knee},
+          {p.dahl_sigma0_N_per_m, fc, p.dahl_exponent,
+           p.static_friction_force_N + (fc - p.coulomb_force_N), p.stribeck_velocity_m_per_s,
+           p.friction_compression_to_rebound_ratio},
+          p.free_play_m};
 }
 
 }  // namespace ridefit::model

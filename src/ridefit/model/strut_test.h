@@ -34,37 +34,88 @@ struct StrutTestParameters {
   T force_delay_s{0.0};
   T force_sensor_cutoff_Hz{0.0};
   int force_sensor_order = 1;
+  // Dry-friction devices (dahl_friction.h, free_play.h): the sliding level in compression over
+  // that in rebound, and free play in series with the damper path.
+  T friction_compression_to_rebound_ratio{1.0};
+  T free_play_m{0.0};
+  // The rest of the damper path the quarter car has (strut_damper_path.h's damper_path_of): the
+  // damper's compression ratio and blow-off knee (a bi-viscous law for an MR damper's pre-yield
+  // and post-yield slopes), the top mount's small-amplitude stiffening, and the command's shape.
+  T compression_to_rebound_ratio{1.0};
+  T damper_knee_velocity_m_per_s{0.0};
+  T damping_above_knee_Ns_per_m{0.0};
+  T top_mount_small_amplitude_stiffness_N_per_m{0.0};
+  T top_mount_transition_deflection_m{0.0};
+  T command_exponent{1.0};
+
+  // The same parameters in another scalar (Jets for a Jacobian).
+  template <typename U>
+  StrutTestParameters<U> cast() const {
+    StrutTestParameters<U> p{U(dahl_sigma0_N_per_m),
+                             U(coulomb_force_N),
+                             U(dahl_exponent),
+                             U(top_mount_stiffness_N_per_m),
+                             U(damping_Ns_per_m),
+                             U(gas_force_N),
+                             U(gas_stiffness_N_per_m),
+                             U(force_offset_N),
+                             U(static_friction_force_N),
+                             U(stribeck_velocity_m_per_s),
+                             U(damping_per_command_Ns_per_m),
+                             U(coulomb_force_per_command_N),
+                             U(command_lag_s),
+                             U(force_gain),
+                             U(force_delay_s),
+                             U(force_sensor_cutoff_Hz),
+                             force_sensor_order,
+                             U(friction_compression_to_rebound_ratio),
+                             U(free_play_m),
+                             U(compression_to_rebound_ratio),
+                             U(damper_knee_velocity_m_per_s),
+                             U(damping_above_knee_Ns_per_m),
+                             U(top_mount_small_amplitude_stiffness_N_per_m),
+                             U(top_mount_transition_deflection_m),
+                             U(command_exponent)};
+    return p;
+  }
 
   bool commanded() const {
     return damping_per_command_Ns_per_m != 0.0 || coulomb_force_per_command_N != 0.0;
   }
   bool has_lag() const { return command_lag_s > 0.0; }
 
-  // The path at a filtered command ū (ū = 0 for a passive damper; limits in commanded_levels).
+  // The path at a filtered command ū (ū = 0 for a passive damper; limits in commanded_levels):
+  // the quarter car's own (damper_path_of).
   StrutDamperPath<T> damper_path(const T& command = T(0.0)) const {
-    T c = damping_Ns_per_m;
-    T fc = coulomb_force_N;
-    if (commanded()) {
-      const CommandedLevels<T> levels =
-          commanded_levels(damping_Ns_per_m, coulomb_force_N, damping_per_command_Ns_per_m,
-                           coulomb_force_per_command_N, command);
-      c = levels.damping_Ns_per_m;
-      fc = levels.coulomb_force_N;
-    }
-    return {{top_mount_stiffness_N_per_m},
-            {c, T(1.0)},
-            {dahl_sigma0_N_per_m, fc, dahl_exponent,
-             static_friction_force_N + (fc - coulomb_force_N), stribeck_velocity_m_per_s}};
+    return damper_path_of(*this, command);
   }
 };
+
+// A damper path whose relaxation time c/k_tm is below this [s] (a rigid mount: 1e9 N/m against
+// 1e4 N·s/m; a dry-friction device with next to no viscous damping) runs in its quasi-static
+// limit on the rig (StrutTest): resolving a relaxation of microseconds took the implicit solver
+// tens of thousands of failed Newton iterations per second of record, and it is far faster than
+// anything a rig record samples.
+inline constexpr double kQuasiStaticPathTime_s = 1e-5;
 
 // The strut assembly on the rig: top mount k_tm in series with (damper c ∥ Dahl friction), the
 // displacement x imposed across it (extension positive), and in parallel an optional gas force
 // F_g0 + k_g·x and a constant offset. States y = [z_c, F_f]: the damper's own deflection and the
 // Dahl force (StrutDamperPath). The rig force, tension positive, is
-//   F = k_tm·(x − z_c) + F_g0 + k_g·x + F_0,
-// and y' = f(y, x) with z_c' = (k_tm·(x − z_c) − F_f)/c, F_f' = Dahl(F_f, z_c') (with the Stribeck
-// level Fc(z_c') when stribeck_velocity_m_per_s > 0).
+//   F = F_tm(D(x − z_c)) + F_g0 + k_g·x + F_0
+// (D the free play's dead zone, identity without it), and y' = f(y, x) with
+// z_c' = (F_tm − F_f)/c, F_f' = Dahl(F_f, z_c') (with the Stribeck level Fc(z_c') when
+// stribeck_velocity_m_per_s > 0).
+//
+// Quasi-static path (c/k_tm < kQuasiStaticPathTime_s): the path force is in equilibrium with the
+// damper and the friction at every instant, F_tm = F_f + c·z_c'. Differentiating it and dropping
+// c·z_c'' (a term of relative size c/k_tm times the record's rates) gives the damper rate
+// explicitly from the rig's velocity x':
+//   z_c' = k·x' / (k + σ0·s),   k = k_tm·D'(x − z_c),  s = |1 − F_f/L·sgn x'|^d ≥ 0,
+// the share of the motion the friction element takes (all of it while sliding, s = 0; none
+// inside the free play, D' = 0), and the force F = F_f + c·z_c' + F_g0 + k_g·x + F_0. With a
+// rigid mount this is the classic F = c·x' + F_f(x). The states stay [z_c, F_f], so the output
+// and the derivatives read them as before.
 //
 // A controlled damper (StrutTestParameters::commanded) reads the command u(t) and, with a lag
 // τ > 0, carries the filtered command ū as a third state: y = [z_c, F_f, ū], ū' = (u − ū)/τ.
@@ -76,20 +127,59 @@ struct StrutTest {
   }
 
   template <typename T>
-  static void derivatives(const T* y, const T& x, const T& command, const StrutTestParameters<T>& p,
-                          T* ydot) {
+  static bool quasi_static(const StrutTestParameters<T>& p) {
+    return p.damping_Ns_per_m < kQuasiStaticPathTime_s * p.top_mount_stiffness_N_per_m;
+  }
+
+  // The damper path at the state's command, its force and the damper's rate z_c'. `x_rate` is
+  // the rig's velocity x' (read only on a quasi-static path).
+  template <typename T>
+  struct PathState {
+    StrutDamperPath<T> path;
+    T force_N;
+    T rate_m_per_s;
+  };
+  template <typename T>
+  static PathState<T> path_state(const T* y, const T& x, const T& x_rate, const T& command,
+                                 const StrutTestParameters<T>& p) {
     const bool lagged = p.commanded() && p.has_lag();
-    const StrutDamperPath<T> path = p.damper_path(lagged ? y[2] : command);
-    const T path_force = path.path_force_N(x, y[0]);
-    const T rate = path.damper_rate_m_per_s(path_force, y[1]);
-    ydot[0] = rate;
-    ydot[1] = path.friction.force_rate_N_per_s(y[1], rate);
-    if (lagged) ydot[2] = (command - y[2]) / p.command_lag_s;
+    PathState<T> out{p.damper_path(lagged ? y[2] : command), T(0.0), T(0.0)};
+    const auto& path = out.path;
+    if (!quasi_static(p)) {
+      out.force_N = path.path_force_N(x, y[0]);
+      out.rate_m_per_s = path.damper_rate_m_per_s(out.force_N, y[1]);
+      return out;
+    }
+    const T delta = x - y[0];
+    // k·D'(δ) by the dead zone's slope (1 without free play).
+    const T k = p.top_mount_stiffness_N_per_m * free_play_slope(delta, p.free_play_m);
+    T share = T(1.0);  // s: how much of the motion the friction element resists, 0..1+
+    if (path.friction.active()) {
+      const T s = T(1.0) - y[1] / path.friction.level_N(x_rate) * sign_positive_at_zero(x_rate);
+      share = s > 0.0 ? signed_power(s, path.friction.exponent) : T(0.0);
+      share = path.friction.sigma0_N_per_m * share;
+    } else {
+      share = T(0.0);
+    }
+    const T denominator = k + share;
+    out.rate_m_per_s = denominator > 0.0 ? T(k * x_rate / denominator) : T(0.0);
+    out.force_N = y[1] + path.damper.force_N(out.rate_m_per_s);
+    return out;
   }
 
   template <typename T>
-  static T force_N(const T* y, const T& x, const StrutTestParameters<T>& p) {
-    return p.top_mount_stiffness_N_per_m * (x - y[0]) + p.gas_force_N +
+  static void derivatives(const T* y, const T& x, const T& x_rate, const T& command,
+                          const StrutTestParameters<T>& p, T* ydot) {
+    const PathState<T> state = path_state(y, x, x_rate, command, p);
+    ydot[0] = state.rate_m_per_s;
+    ydot[1] = state.path.friction.force_rate_N_per_s(y[1], state.rate_m_per_s);
+    if (p.commanded() && p.has_lag()) ydot[2] = (command - y[2]) / p.command_lag_s;
+  }
+
+  template <typename T>
+  static T force_N(const T* y, const T& x, const T& x_rate, const T& command,
+                   const StrutTestParameters<T>& p) {
+    return path_state(y, x, x_rate, command, p).force_N + p.gas_force_N +
            p.gas_stiffness_N_per_m * x + p.force_offset_N;
   }
 };

@@ -26,7 +26,9 @@ class SensedStrutTest : public OdeSystem {
   int size() const override { return n_ + stages_; }
   bool derivatives(double t_s, const double* y, double* ydot) const override {
     if (!strut_.derivatives(t_s, y, ydot)) return false;
-    const double force = model::StrutTest::force_N(y, x_.at(t_s), p_) - p_.force_offset_N;
+    const double force =
+        model::StrutTest::force_N(y, x_.at(t_s), x_.rate_at(t_s), strut_.command_at(t_s), p_) -
+        p_.force_offset_N;
     ydot[n_] = (force - y[n_]) / tau_s_;
     if (stages_ == 2) ydot[n_ + 1] = (y[n_] - y[n_ + 1]) / tau_s_;
     return true;
@@ -97,7 +99,8 @@ std::vector<double> reference_strut_test_force(std::span<const double> time_s,
   }
   std::vector<double> y0 = {displacement_m(t0), 0.0};
   if (strut.size() == 3) y0.push_back(command(t0));
-  const double rest_force = model::StrutTest::force_N(y0.data(), displacement_m(t0), parameters) -
+  const double rest_force = model::StrutTest::force_N(y0.data(), displacement_m(t0), x.rate_at(t0),
+                                                      command ? command(t0) : 0.0, parameters) -
                             parameters.force_offset_N;
   if (filtered) {
     for (int s = 0; s < (parameters.force_sensor_order == 2 ? 2 : 1); ++s) {
@@ -114,7 +117,8 @@ std::vector<double> reference_strut_test_force(std::span<const double> time_s,
     if (filtered) {
       physical = y[strut.size() + (parameters.force_sensor_order == 2 ? 1 : 0)];
     } else {
-      physical = model::StrutTest::force_N(y, displacement_m(times[i]), parameters) -
+      physical = model::StrutTest::force_N(y, displacement_m(times[i]), x.rate_at(times[i]),
+                                           command ? command(times[i]) : 0.0, parameters) -
                  parameters.force_offset_N;
     }
     force.push_back(parameters.force_gain * physical + parameters.force_offset_N);

@@ -120,8 +120,9 @@ inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
                                           std::span<const double> displacement_m,
                                           const model::StrutTestParameters<double>& values,
                                           const StrutTestSolverOptions& options = {},
-                                          std::span<const double> command = {}) {
-  const RigDisplacement x(time_s, displacement_m, options.interpolation);
+                                          std::span<const double> command = {},
+                                          std::span<const double> velocity_m_per_s = {}) {
+  const RigDisplacement x(time_s, displacement_m, options.interpolation, velocity_m_per_s);
   const RigDisplacement u(time_s, command.empty() ? displacement_m : command,
                           RigInterpolation::kLinear);
   EsdirkStepHistory history;
@@ -134,20 +135,23 @@ inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
 
 // `parameters` and `values` hold the same numbers: `values` as doubles for the run in doubles
 // (for T = double pass the same struct twice). `command`: the record's command (current or
-// voltage) at its samples, for a controlled damper; empty for none (a command of 0). The result
-// is what the load cell reads (apply_force_sensor).
+// voltage) at its samples, for a controlled damper; empty for none (a command of 0).
+// `velocity_m_per_s`: the rig's measured velocity at its samples, when it has one (RigDisplacement
+// then runs through the samples with those slopes). The result is what the load cell reads
+// (apply_force_sensor).
 template <typename T>
 std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
                                                std::span<const double> displacement_m,
                                                const model::StrutTestParameters<T>& parameters,
                                                const model::StrutTestParameters<double>& values,
                                                const StrutTestSolverOptions& options = {},
-                                               std::span<const double> command = {}) {
+                                               std::span<const double> command = {},
+                                               std::span<const double> velocity_m_per_s = {}) {
   const std::size_t n = time_s.size();
   std::vector<T> force;
   if (n == 0) return force;
   force.reserve(n);
-  const RigDisplacement x(time_s, displacement_m, options.interpolation);
+  const RigDisplacement x(time_s, displacement_m, options.interpolation, velocity_m_per_s);
   // A command switches between levels: straight lines between samples, never an overshoot.
   const RigDisplacement u(time_s, command.empty() ? displacement_m : command,
                           RigInterpolation::kLinear);
@@ -163,8 +167,9 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
       const Trajectory trajectory =
           integrate_esdirk_or_frozen(system, y0, times, integrator, options.frozen_steps);
       for (std::size_t k = 0; k < n; ++k) {
-        force.push_back(
-            model::StrutTest::force_N(trajectory.state_at(k), displacement_m[k], parameters));
+        force.push_back(model::StrutTest::force_N(trajectory.state_at(k), displacement_m[k],
+                                                  x.rate_at(time_s[k]), command_at(time_s[k]),
+                                                  parameters));
       }
     } else {
       EsdirkStepHistory own_history;
@@ -172,14 +177,18 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
           esdirk_steps_or_frozen(system, y0, times, integrator, options.frozen_steps, own_history);
       T y0_t[3] = {T(y0[0]), T(y0[1]), T(0.0)};
       if (y0.size() == 3) y0_t[2] = T(y0[2]);
-      force.push_back(model::StrutTest::force_N(y0_t, T(displacement_m[0]), parameters));
+      force.push_back(model::StrutTest::force_N(y0_t, T(displacement_m[0]), T(x.rate_at(time_s[0])),
+                                                T(command_at(time_s[0])), parameters));
       const bool ok = replay_esdirk<T, 3>(
           history, system, std::span<const T>(y0_t, y0.size()), time_s,
           [&](double t, const T* y, T* ydot) {
-            model::StrutTest::derivatives(y, T(x.at(t)), T(command_at(t)), parameters, ydot);
+            model::StrutTest::derivatives(y, T(x.at(t)), T(x.rate_at(t)), T(command_at(t)),
+                                          parameters, ydot);
           },
           [&](std::size_t k, double, const T* y) {
-            force.push_back(model::StrutTest::force_N(y, T(displacement_m[k]), parameters));
+            force.push_back(model::StrutTest::force_N(y, T(displacement_m[k]),
+                                                      T(x.rate_at(time_s[k])),
+                                                      T(command_at(time_s[k])), parameters));
           });
       if (!ok) return std::nullopt;
     }

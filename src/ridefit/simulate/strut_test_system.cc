@@ -2,23 +2,46 @@
 
 #include <ceres/jet.h>
 
+#include <boost/math/interpolators/cubic_hermite.hpp>
+#include <boost/math/interpolators/makima.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace ridefit::simulate {
 
 RigDisplacement::RigDisplacement(std::span<const double> time_s,
                                  std::span<const double> displacement_m,
-                                 RigInterpolation interpolation)
+                                 RigInterpolation interpolation,
+                                 std::span<const double> velocity_m_per_s)
     : time_s_(time_s.begin(), time_s.end()),
       displacement_m_(displacement_m.begin(), displacement_m.end()) {
   const std::size_t n = time_s_.size();
   if (n < 5 || interpolation == RigInterpolation::kLinear) return;
-  const double step = (time_s_.back() - time_s_.front()) / static_cast<double>(n - 1);
-  for (std::size_t k = 1; k < n; ++k) {
-    if (std::abs(time_s_[k] - time_s_[k - 1] - step) > 1e-3 * step) return;
+  if (velocity_m_per_s.size() == n) {
+    auto hermite = std::make_shared<boost::math::interpolators::cubic_hermite<std::vector<double>>>(
+        std::vector<double>(time_s_), std::vector<double>(displacement_m_),
+        std::vector<double>(velocity_m_per_s.begin(), velocity_m_per_s.end()));
+    cubic_m_ = [hermite](double t) { return (*hermite)(t); };
+    cubic_rate_m_per_s_ = [hermite](double t) { return hermite->prime(t); };
+    return;
   }
-  spline_.emplace(displacement_m_, time_s_.front(), step);
+  const double step = (time_s_.back() - time_s_.front()) / static_cast<double>(n - 1);
+  bool uniform = true;
+  for (std::size_t k = 1; k < n && uniform; ++k) {
+    uniform = std::abs(time_s_[k] - time_s_[k - 1] - step) <= 1e-3 * step;
+  }
+  if (uniform) {
+    spline_.emplace(displacement_m_, time_s_.front(), step);
+    return;
+  }
+  // Uneven steps: a C1 cubic through the samples. Linear pieces put a kink in the motion at every
+  // sample, and a 3 kHz record with rounded time stamps then took more steps than the run allows.
+  auto akima = std::make_shared<boost::math::interpolators::makima<std::vector<double>>>(
+      std::vector<double>(time_s_), std::vector<double>(displacement_m_));
+  cubic_m_ = [akima](double t) { return (*akima)(t); };
+  cubic_rate_m_per_s_ = [akima](double t) { return akima->prime(t); };
 }
 
 double RigDisplacement::at(double time_s) const {
@@ -34,39 +57,44 @@ double RigDisplacement::interpolate(double time_s) const {
   if (spline_) return spline_->value(time_s);
   if (time_s <= time_s_.front()) return displacement_m_.front();
   if (time_s >= time_s_.back()) return displacement_m_.back();
+  if (cubic_m_) return cubic_m_(time_s);
   const auto upper = std::upper_bound(time_s_.begin(), time_s_.end(), time_s);
   const auto k = static_cast<std::size_t>(upper - time_s_.begin());
   const double w = (time_s - time_s_[k - 1]) / (time_s_[k] - time_s_[k - 1]);
   return (1.0 - w) * displacement_m_[k - 1] + w * displacement_m_[k];
 }
 
+double RigDisplacement::rate_at(double time_s) const {
+  if (exact_m_) {
+    // Central difference of a smooth function: h = 1e-5 s leaves ~1e-10 relative error.
+    const double h = 1e-5;
+    return (exact_m_(time_s + h) - exact_m_(time_s - h)) / (2.0 * h);
+  }
+  if (spline_) return spline_->derivative(time_s);
+  if (time_s < time_s_.front() || time_s > time_s_.back() || time_s_.size() < 2) return 0.0;
+  if (cubic_rate_m_per_s_) return cubic_rate_m_per_s_(time_s);
+  auto upper = std::upper_bound(time_s_.begin(), time_s_.end(), time_s);
+  if (upper == time_s_.end()) --upper;
+  const auto k = static_cast<std::size_t>(upper - time_s_.begin());
+  return (displacement_m_[k] - displacement_m_[k - 1]) / (time_s_[k] - time_s_[k - 1]);
+}
+
 bool StrutTestSystem::derivatives(double t_s, const double* y, double* ydot) const {
-  model::StrutTest::derivatives(y, x_.at(t_s), command_at(t_s), p_, ydot);
+  model::StrutTest::derivatives(y, x_.at(t_s), x_.rate_at(t_s), command_at(t_s), p_, ydot);
   bool finite = true;
   for (int i = 0; i < size(); ++i) finite = finite && std::isfinite(ydot[i]);
   return finite;
 }
 
-bool StrutTestSystem::commanded_jacobian(double t_s, const double* y,
-                                         double* jacobian_column_major) const {
+bool StrutTestSystem::autodiff_jacobian(double t_s, const double* y,
+                                        double* jacobian_column_major) const {
   using Jet = ceres::Jet<double, 3>;
   const int n = size();
   Jet yj[3], ydot[3];
   for (int i = 0; i < n; ++i) yj[i] = Jet(y[i], i);
-  const model::StrutTestParameters<Jet> p{Jet(p_.dahl_sigma0_N_per_m),
-                                          Jet(p_.coulomb_force_N),
-                                          Jet(p_.dahl_exponent),
-                                          Jet(p_.top_mount_stiffness_N_per_m),
-                                          Jet(p_.damping_Ns_per_m),
-                                          Jet(p_.gas_force_N),
-                                          Jet(p_.gas_stiffness_N_per_m),
-                                          Jet(p_.force_offset_N),
-                                          Jet(p_.static_friction_force_N),
-                                          Jet(p_.stribeck_velocity_m_per_s),
-                                          Jet(p_.damping_per_command_Ns_per_m),
-                                          Jet(p_.coulomb_force_per_command_N),
-                                          Jet(p_.command_lag_s)};
-  model::StrutTest::derivatives(yj, Jet(x_.at(t_s)), Jet(command_at(t_s)), p, ydot);
+  const model::StrutTestParameters<Jet> p = p_.cast<Jet>();
+  model::StrutTest::derivatives(yj, Jet(x_.at(t_s)), Jet(x_.rate_at(t_s)), Jet(command_at(t_s)), p,
+                                ydot);
   bool finite = true;
   for (int column = 0; column < n; ++column) {
     for (int row = 0; row < n; ++row) {
@@ -79,10 +107,14 @@ bool StrutTestSystem::commanded_jacobian(double t_s, const double* y,
 }
 
 bool StrutTestSystem::jacobian(double t_s, const double* y, double* jacobian_column_major) const {
-  if (p_.commanded()) return commanded_jacobian(t_s, y, jacobian_column_major);
+  const auto path = p_.damper_path();
+  if (p_.commanded() || p_.free_play_m > 0.0 || p_.friction_compression_to_rebound_ratio != 1.0 ||
+      model::StrutTest::quasi_static(p_) || !path.damper.linear() || !path.top_mount.linear()) {
+    return autodiff_jacobian(t_s, y, jacobian_column_major);
+  }
   // The partial derivatives written out: this runs once per stage of every tangent replay, where
-  // a generic autodiff spent most of its time in exp and log for the Dahl power. The rig's top
-  // mount is linear and its damper symmetric (model::StrutTestParameters), so
+  // a generic autodiff spent most of its time in exp and log for the Dahl power. Here the top
+  // mount is linear and the damper symmetric without a knee (the rest goes to autodiff), so
   // z_c' = v = (k_tm·(x − z_c) − F)/c. A test compares this with autodiff of StrutTest.
   const double c = p_.damping_Ns_per_m;
   const double v = (p_.top_mount_stiffness_N_per_m * (x_.at(t_s) - y[0]) - y[1]) / c;
@@ -126,9 +158,8 @@ double StrutTestSystem::typical_magnitude(int state_index) const {
 }
 
 void StrutTestSystem::switching(double t_s, const double* y, double* g) const {
-  const bool lagged = p_.commanded() && p_.has_lag();
-  const auto path = p_.damper_path(lagged ? y[2] : command_at(t_s));
-  g[0] = path.damper_rate_m_per_s(path.path_force_N(x_.at(t_s), y[0]), y[1]);
+  g[0] = model::StrutTest::path_state(y, x_.at(t_s), x_.rate_at(t_s), command_at(t_s), p_)
+             .rate_m_per_s;
 }
 
 }  // namespace ridefit::simulate

@@ -16,23 +16,30 @@ namespace ridefit::simulate {
 enum class RigInterpolation {
   // A C2 cubic spline (uniform records; error O(step⁴)) for smooth motions: linear
   // interpolation would miss a 20 Hz motion sampled at 1 kHz by 0.2 % between samples and its
-  // velocity, which the damper feels, by several per cent.
+  // velocity, which the damper feels, by several per cent. Records whose time steps vary (as
+  // exported records with rounded time stamps do) get a C1 cubic of their own steps instead
+  // (modified Akima: no overshoot at a quantisation step or a corner).
   kSpline,
   // Straight lines between samples: exact for piecewise-linear commands (triangle waves), where
   // a spline would overshoot at each corner, just where the pre-sliding stiffness shows.
   kLinear,
 };
 
-// The displacement a rig imposed, as a function of time between its samples. Non-uniform
-// records (a step more than 0.1 % off the mean) and those under five samples are interpolated
-// linearly whatever is asked.
+// The displacement a rig imposed, as a function of time between its samples. With a measured
+// velocity (one value per sample) the curve is the cubic Hermite through each sample with that
+// slope: the velocity the damper feels is the rig's own, not a difference of quantised
+// displacements. Records under five samples are interpolated linearly whatever is asked.
 class RigDisplacement {
  public:
   RigDisplacement(std::span<const double> time_s, std::span<const double> displacement_m,
-                  RigInterpolation interpolation = RigInterpolation::kSpline);
+                  RigInterpolation interpolation = RigInterpolation::kSpline,
+                  std::span<const double> velocity_m_per_s = {});
   // A displacement known at every instant (reference data: strut_test_reference.h).
   explicit RigDisplacement(std::function<double(double)> exact_m) : exact_m_(std::move(exact_m)) {}
   double at(double time_s) const;
+  // The rig's velocity x'(t) [m/s]: the interpolant's own slope (a central difference of the exact
+  // displacement for reference data).
+  double rate_at(double time_s) const;
 
  private:
   double interpolate(double time_s) const;
@@ -43,6 +50,9 @@ class RigDisplacement {
   std::vector<double> time_s_;
   std::vector<double> displacement_m_;
   std::optional<road::UniformSpline> spline_;
+  // Non-uniform steps (modified Akima) or a measured velocity (cubic Hermite), and its slope.
+  std::function<double(double)> cubic_m_;
+  std::function<double(double)> cubic_rate_m_per_s_;
   std::function<double(double)> exact_m_;
 };
 
@@ -70,9 +80,10 @@ class StrutTestSystem : public OdeSystem {
   void switching(double t_s, const double* y, double* g) const override;
 
  private:
-  // The Jacobian of a controlled damper, by forward autodiff of model::StrutTest (its states
-  // and the command's lag are few; the passive law is written out by hand in jacobian()).
-  bool commanded_jacobian(double t_s, const double* y, double* jacobian_column_major) const;
+  // The Jacobian by forward autodiff of model::StrutTest: a controlled damper (its states and the
+  // command's lag are few), free play or direction-dependent friction; the plain passive law is
+  // written out by hand in jacobian().
+  bool autodiff_jacobian(double t_s, const double* y, double* jacobian_column_major) const;
 
   model::StrutTestParameters<double> p_;
   const RigDisplacement& x_;

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "ridefit/fitting/hysteresis_record.h"
+#include "ridefit/model/strut_test.h"
+#include "ridefit/simulate/strut_test_response.h"
+
+namespace ridefit::fitting {
+
+// A fitted strut's force on a record it was not fitted to (a held-out test: the second half of
+// a random record, another file's sine tests), scored as a fit is.
+struct RecordPrediction {
+  std::string source;
+  std::vector<double> force_N;  // at every sample of the record
+  double score_from_s = 0.0;    // samples before this time are run through but not scored
+  std::size_t scored = 0;       // samples scored
+  double residual_rms_N = 0.0;
+  // RMS of the residual over the scored samples' measured spread about their own mean (%): each
+  // test normalised by its own force, as the fit's per-record NRMSE is.
+  double nrmse_percent = 0.0;
+};
+
+// NRMSE (%) of `model_N` against `measured_N` over samples [first, n): RMS residual over the
+// measured spread about its mean; 0 for a record with no spread.
+double nrmse_percent(const std::vector<double>& measured_N, const std::vector<double>& model_N,
+                     std::size_t first = 0);
+
+// Runs `strut` over each record from rest at its first sample and scores samples at times >=
+// score_from_s. RunError naming the record when the model cannot be solved on it.
+std::vector<RecordPrediction> predict_records(const std::vector<HysteresisRecord>& records,
+                                              const model::StrutTestParameters<double>& strut,
+                                              const simulate::StrutTestSolverOptions& solver,
+                                              double score_from_s = 0.0);
+
+}  // namespace ridefit::fitting

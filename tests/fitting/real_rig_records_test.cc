@@ -1,0 +1,226 @@
+// Rig records as they come from a DAQ (issue: real rig records): rounded time stamps, quantised
+// displacement, offsets, several tests in one file with pauses, a 10 kN friction level, free
+// play and direction-dependent friction. The records are made by CVODE at rtol 1e-10 on the
+// exact displacement (synthetic/reference_rig_record.h), then degraded as a DAQ degrades them;
+// the fits run ridefit's ESDIRK on the sampled, degraded record and start away from the truth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "ridefit/common/errors.h"
+#include "ridefit/fitting/hysteresis_fit.h"
+#include "ridefit/fitting/hysteresis_prediction.h"
+#include "ridefit/fitting/hysteresis_record.h"
+#include "ridefit/fitting/strut_start.h"
+#include "ridefit/io/csv_table.h"
+#include "ridefit/model/free_play.h"
+#include "ridefit/simulate/strut_test_system.h"
+#include "ridefit/synthetic/reference_rig_record.h"
+#include "support/cli_runner.h"
+#include "support/temp_dir.h"
+
+namespace ridefit {
+namespace {
+
+using fitting::HysteresisRecord;
+using model::StrutTestParameters;
+constexpr double kPi = std::numbers::pi;
+
+// Closed form of the dead zone: nothing inside the slack, the full deflection less half the
+// slack beyond it, continuous in value and slope at the rounded corners.
+TEST(FreePlay, DeadZoneIsExactOutsideItsRoundedCornersAndC1) {
+  const double b = 4e-3;
+  EXPECT_EQ(model::free_play_deflection_m(0.0, b), 0.0);
+  EXPECT_EQ(model::free_play_deflection_m(1.5e-3, b), 0.0);
+  EXPECT_EQ(model::free_play_deflection_m(-1.5e-3, b), 0.0);
+  EXPECT_DOUBLE_EQ(model::free_play_deflection_m(5e-3, b), 3e-3);
+  EXPECT_DOUBLE_EQ(model::free_play_deflection_m(-5e-3, b), -3e-3);
+  EXPECT_EQ(model::free_play_deflection_m(3e-3, 0.0), 3e-3);  // none: identity
+  const double r = model::kFreePlayRoundingShare * b, h = 1e-9;
+  for (double corner : {0.5 * b - r, 0.5 * b + r}) {
+    const double below = model::free_play_deflection_m(corner - h, b);
+    const double at = model::free_play_deflection_m(corner, b);
+    const double above = model::free_play_deflection_m(corner + h, b);
+    EXPECT_NEAR(above - at, at - below, 1e-3 * h) << "slope jumps at " << corner;
+    EXPECT_NEAR(above, below, 3 * h);
+  }
+}
+
+// Records exported with rounded time stamps (a 1001.6 Hz grid printed to 0.1 ms: steps of 0.9
+// and 1.0 ms) are interpolated by a C1 cubic of their own steps, not by straight lines.
+TEST(RigDisplacementUneven, PassesThroughSamplesAndFollowsAMotionBetweenThem) {
+  std::vector<double> t, x;
+  for (int k = 0; k < 400; ++k) {
+    t.push_back(std::round(k / 1001.6 * 1e4) / 1e4);
+    x.push_back(0.005 * std::sin(2 * kPi * 7.0 * t.back()));
+  }
+  const simulate::RigDisplacement displacement(t, x);
+  double worst = 0.0;
+  for (std::size_t k = 1; k + 1 < t.size(); ++k) {
+    EXPECT_NEAR(displacement.at(t[k]), x[k], 1e-15);
+    const double mid = 0.5 * (t[k] + t[k + 1]);
+    worst = std::max(worst, std::abs(displacement.at(mid) - 0.005 * std::sin(2 * kPi * 7 * mid)));
+  }
+  // Straight lines miss a 7 Hz, 5 mm sine at 1 kHz by up to 2.4 µm between samples.
+  EXPECT_LT(worst, 0.2e-6);
+}
+
+// A measured velocity column makes the motion between samples the cubic Hermite with those
+// slopes: quantised displacement no longer becomes velocity spikes.
+TEST(RigDisplacementWithVelocity, UsesTheMeasuredSlopes) {
+  std::vector<double> t, x, v;
+  const double q = 3e-6;  // the press's 3 µm resolution
+  for (int k = 0; k < 300; ++k) {
+    t.push_back(k * 1e-3);
+    const double exact = 0.01 * std::sin(2 * kPi * 2.0 * t.back());
+    x.push_back(q * std::round(exact / q));
+    v.push_back(0.01 * 2 * kPi * 2.0 * std::cos(2 * kPi * 2.0 * t.back()));
+  }
+  const simulate::RigDisplacement with(t, x, simulate::RigInterpolation::kSpline, v);
+  const simulate::RigDisplacement without(t, x);
+  double worst_with = 0.0, worst_without = 0.0;
+  const double h = 1e-5;
+  for (std::size_t k = 10; k + 10 < t.size(); ++k) {
+    const double tm = t[k] + 0.3e-3;
+    const double exact_v = 0.01 * 2 * kPi * 2.0 * std::cos(2 * kPi * 2.0 * tm);
+    worst_with =
+        std::max(worst_with, std::abs((with.at(tm + h) - with.at(tm - h)) / (2 * h) - exact_v));
+    worst_without = std::max(
+        worst_without, std::abs((without.at(tm + h) - without.at(tm - h)) / (2 * h) - exact_v));
+  }
+  EXPECT_LT(worst_with, 0.5 * worst_without);
+  EXPECT_LT(worst_with, 2e-3);  // m/s: the quantisation's 3 mm/s spikes are gone
+}
+
+// A file of five tests at five currents, as a DAQ paused between them: the time runs on, the
+// actuator rests at an offset position before and after each test, displacement quantised at
+// 3 µm and force at 3 N, a load-cell offset.
+struct FiveCurrentFile {
+  std::string path;
+  StrutTestParameters<double> truth{};
+};
+
+StrutTestParameters<double> mr_truth() {
+  StrutTestParameters<double> p{};
+  p.dahl_sigma0_N_per_m = 2.0e6;
+  p.coulomb_force_N = 150.0;
+  p.dahl_exponent = 1.0;
+  p.top_mount_stiffness_N_per_m = 3.0e6;
+  p.damping_Ns_per_m = 1500.0;
+  p.force_offset_N = 45.0;
+  p.gas_stiffness_N_per_m = 4000.0;
+  p.damping_per_command_Ns_per_m = 2500.0;
+  p.coulomb_force_per_command_N = 1100.0;
+  return p;
+}
+
+FiveCurrentFile five_current_file(const testing::TempDir& dir, int tests = 5, double cycles = 4.0) {
+  FiveCurrentFile file{(dir.path() / "five_currents.csv").string(), mr_truth()};
+  const double rate = 1000.0, f = 2.0, amplitude = 0.008, rest = -0.0299;
+  std::vector<double> time, x, force, current, segment;
+  double t0 = 0.0;
+  for (int test = 0; test < tests; ++test) {
+    const double amps = 0.25 * test;
+    const double lead = 0.3, motion = cycles / f;
+    // Rest, then a sine from rest (starting at its zero), then rest.
+    auto displacement = [&](double t) {
+      const double s = t - lead;
+      return rest + (s > 0.0 && s < motion ? amplitude * std::sin(2 * kPi * f * s) : 0.0);
+    };
+    const auto samples = static_cast<std::size_t>((2 * lead + motion) * rate);
+    const auto grid = synthetic::sample_times(samples, rate);
+    const HysteresisRecord r = synthetic::reference_rig_record(grid, displacement, file.truth,
+                                                               [amps](double) { return amps; });
+    for (std::size_t k = 0; k < samples; ++k) {
+      time.push_back(t0 + grid[k]);
+      x.push_back(3e-6 * std::round(r.displacement_m[k] / 3e-6));
+      force.push_back(3.0 * std::round(r.force_N[k] / 3.0));
+      current.push_back(amps);
+      segment.push_back(test + 1);
+    }
+    t0 += grid.back() + 25.0;  // the pause: the sample clock ran on
+  }
+  io::CsvTable table(file.path);
+  table.add("time", "s", time);
+  table.add("displacement", "m", x);
+  table.add("force", "N", force);
+  table.add("current", "A", current);
+  table.add("segment", "1", segment);
+  table.write(file.path);
+  return file;
+}
+
+TEST(RigTestsFile, SplitsBySegmentAndLeavesTheRestOut) {
+  const testing::TempDir dir("rig_tests_split");
+  const FiveCurrentFile file = five_current_file(dir, 3, 2.0);
+  const auto tests = fitting::load_hysteresis_tests(file.path);
+  ASSERT_EQ(tests.size(), 3u);
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    const auto& r = tests[i];
+    EXPECT_NE(r.source.find("(segment " + std::to_string(i + 1) + ")"), std::string::npos);
+    // Motion of 1 s (2 cycles at 2 Hz) between 0.3 s rests: about 1.0 s kept, not 1.6 s.
+    const double kept = r.time_s.back() - r.time_s.front();
+    EXPECT_GT(kept, 0.99);
+    EXPECT_LT(kept, 1.01);
+    EXPECT_EQ(r.command.front(), 0.25 * static_cast<double>(i));
+  }
+}
+
+TEST(RigTestsFile, BadSegmentsAreInputErrorsNamingFileRowAndColumn) {
+  const testing::TempDir dir("rig_tests_bad");
+  std::string rows = "time[s],displacement[m],force[N],segment[1]\n";
+  for (int k = 0; k < 200; ++k) {
+    const double t = k * 0.01;
+    rows += std::to_string(t) + "," + std::to_string(0.01 * std::sin(2 * kPi * t)) + "," +
+            std::to_string(100 * std::cos(2 * kPi * t)) + "," + (k == 57 ? "1.5" : "1") + "\n";
+  }
+  const std::string not_whole = dir.write("not_whole.csv", rows);
+  try {
+    fitting::load_hysteresis_tests(not_whole);
+    FAIL() << "a segment of 1.5 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("row 59"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("segment"), std::string::npos) << e.what();
+  }
+  // Less than one cycle: a quarter of a sine.
+  std::string short_rows = "time[s],displacement[m],force[N],test[1]\n";
+  for (int k = 0; k < 60; ++k) {
+    const double t = k * 0.004;
+    short_rows += std::to_string(t) + "," + std::to_string(0.01 * std::sin(2 * kPi * t)) + "," +
+                  std::to_string(100 * std::cos(2 * kPi * t)) + ",3\n";
+  }
+  const std::string quarter = dir.write("quarter.csv", short_rows);
+  try {
+    fitting::load_hysteresis_tests(quarter);
+    FAIL() << "a test of a quarter cycle was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("less than one cycle"), std::string::npos) << e.what();
+  }
+}
+
+// The command: non-whole segment numbers and a test shorter than a cycle exit 2 with no output;
+// a command column with a passive model keeps working.
+TEST(FitCli, RealRecordBadInputsExitTwoWithoutOutput) {
+  const testing::TempDir dir("fit_cli_real_bad");
+  std::string rows = "time[s],displacement[m],force[N],segment[1]\n";
+  for (int k = 0; k < 100; ++k) {
+    const double t = k * 0.01;
+    rows += std::to_string(t) + "," + std::to_string(0.01 * std::sin(2 * kPi * t)) + ",5," +
+            (k < 50 ? "1" : "2.5") + "\n";
+  }
+  const std::string data = dir.write("bad.csv", rows);
+  const std::string out = (dir.path() / "fitted.yaml").string();
+  const auto run = testing::run_cli("fit hysteresis " + data +
+                                    " --model " RIDEFIT_SOURCE_DIR
+                                    "/datasets/lab/mr_strut_passive.yaml --free "
+                                    "coulomb_force_N -o " +
+                                    out);
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("row 52"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace ridefit
