@@ -105,7 +105,11 @@ TEST(ParameterTable, EachNamedRowIsTheRowOfItsKey) {
        {&quarter_car_rows::command_lag_s, "command_lag_s"},
        {&quarter_car_rows::body_acc_gain, "body_acc_gain"},
        {&quarter_car_rows::wheel_acc_gain, "wheel_acc_gain"},
-       {&quarter_car_rows::acc_sensor_cutoff_Hz, "acc_sensor_cutoff_Hz"}});
+       {&quarter_car_rows::acc_sensor_cutoff_Hz, "acc_sensor_cutoff_Hz"},
+       {&quarter_car_rows::friction_compression_to_rebound_ratio,
+        "friction_compression_to_rebound_ratio"},
+       {&quarter_car_rows::free_play_m, "free_play_m"},
+       {&quarter_car_rows::command_exponent, "command_exponent"}});
   expect_named(kHalfCarBodyParameters,
                {{&half_car_body_rows::body_mass_kg, "body_mass_kg"},
                 {&half_car_body_rows::pitch_inertia_kg_m2, "pitch_inertia_kg_m2"},
