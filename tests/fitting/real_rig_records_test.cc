@@ -195,7 +195,7 @@ TEST(RigTestsFile, BadSegmentsAreInputErrorsNamingFileRowAndColumn) {
 
 // The command: non-whole segment numbers and a test shorter than a cycle exit 2 with no output;
 // a command column with a passive model keeps working.
-TEST(FitCli, RealRecordBadInputsExitTwoWithoutOutput) {
+TEST(RealRecordCli, BadSegmentsExitTwoWithoutOutput) {
   const testing::TempDir dir("fit_cli_real_bad");
   std::string rows = "time[s],displacement[m],force[N],segment[1]\n";
   for (int k = 0; k < 100; ++k) {
