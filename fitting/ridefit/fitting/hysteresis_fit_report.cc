@@ -85,9 +85,9 @@ nlohmann::json summary_json(const HysteresisFitResult& fit, const HysteresisFitR
                                {"value", p.value},
                                {"standard_error", number_or_null(p.standard_error)}});
   }
-  j["records"] = nlohmann::json::array();
+  j["record_nrmse"] = nlohmann::json::array();
   for (std::size_t r = 0; r < report.sources.size() && r < fit.record_nrmse_percent.size(); ++r) {
-    j["records"].push_back(
+    j["record_nrmse"].push_back(
         {{"file", report.sources[r]}, {"nrmse_percent", fit.record_nrmse_percent[r]}});
   }
   for (std::size_t r = 0; r < report.sources.size(); ++r) {
