@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadDiagnosis{"RigMixedWithVehicle", "{rig} {record}", "mix strut rig tests"},
         BadDiagnosis{"RigUnknownFreeParameter", "{rig} --free gas_rate",
                      "'gas_rate' is not a strut-test parameter"},
-        BadDiagnosis{"RigTooShortToSplit", "{short_rig}", "too few for a loop"},
+        BadDiagnosis{"RigTooShortToSplit", "{short_rig}", "less than one cycle"},
         BadDiagnosis{"RigWithoutForce", "{forceless}", "no column 'force'"},
         BadDiagnosis{"RigUnknownEffect", "{rig} --effects gas_spring", "unknown effect"},
         BadDiagnosis{"ExcitationCountMismatch",

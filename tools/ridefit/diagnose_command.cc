@@ -191,7 +191,8 @@ void add_diagnose_options(CLI::App& command, DiagnoseFlags& flags) {
           "Vehicle: one or two measurements (CSV or .mat: time, road unless --excitation, "
           "body_acc and/or wheel_acc); the first is fitted, the second (or the second "
           "half) judges. Rig: strut tests (CSV or .mat: time, displacement, force); the 1st, "
-          "3rd, ... are fitted, the 2nd, 4th, ... judge (one: its halves)")
+          "3rd, ... are fitted, the 2nd, 4th, ... judge (one: its halves); a file with a segment "
+          "or test column gives one test per segment")
       ->required()
       ->check(CLI::ExistingFile);
   command

@@ -46,7 +46,12 @@ DiagnosisOutput diagnose_loops(const DiagnoseFlags& flags, bool figure,
 
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   std::vector<fitting::HysteresisRecord> records;
-  for (const auto& file : flags.records) records.push_back(fitting::load_hysteresis_record(file));
+  // A file of several tests (a segment or test column) gives one record per test, each cut to
+  // its motion: five currents in one file are fitted on the 1st, 3rd, 5th and judged on the
+  // others, as separate files would be.
+  for (const auto& file : flags.records) {
+    for (auto& test : fitting::load_hysteresis_tests(file)) records.push_back(std::move(test));
+  }
   const dx::LoopDiagnosisData data = dx::split_loops(records);
   for (const auto* part : {&data.training, &data.held_out}) {
     for (const auto& r : *part) {

@@ -31,6 +31,27 @@ struct Block {
   int record = -1;
 };
 
+// Why the start cannot be evaluated, in the integrator's own words and naming the record (the
+// residual blocks only say that they failed).
+std::string start_failure(const std::vector<HysteresisRecord>& records,
+                          const model::StrutTestParameters<double>& start,
+                          const simulate::StrutTestSolverOptions& solver) {
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const auto& record = records[r];
+    try {
+      simulate::strut_test_steps(record.time_s, record.displacement_m, start, solver,
+                                 record.command, record.velocity_m_per_s);
+    } catch (const RunError& e) {
+      return fmt::format(
+          "fit: the strut model cannot be run at the start values on record {} ({}): {}; check "
+          "the model file's values and the record's time column",
+          r + 1, record.source.empty() ? "no name" : record.source, e.what());
+    }
+  }
+  return "fit: the strut model gives no finite force at the start values; check the model "
+         "file's values";
+}
+
 // The force residuals of one record, as a function of the blocks it uses.
 struct RecordResidual {
   const HysteresisRecord* record = nullptr;
@@ -363,9 +384,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   std::vector<double> initial_residuals;
   if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &initial_cost, &initial_residuals,
                         nullptr, nullptr)) {
-    throw RunError(
-        "fit: the strut model cannot be solved at the start values (a Newton step failed); "
-        "check the model file's values");
+    throw RunError(start_failure(records, base, options.solver));
   }
 
   ceres::Solver::Options solver;

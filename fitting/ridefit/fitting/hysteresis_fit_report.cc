@@ -23,6 +23,16 @@ HysteresisFitReport report_hysteresis_fit(const std::vector<HysteresisRecord>& r
     }
   }
   if (!compression_m.empty()) report.friction_line = fit_friction_compression(fit, compression_m);
+  for (std::size_t r = 0; r < records.size() && r < fit.fitted.size(); ++r) {
+    if (!records[r].command.empty() && !fit.fitted[r].commanded()) {
+      report.unused_command = fmt::format(
+          "{} carries a command column ({}) that this model does not use (no command law: "
+          "damping_per_command_Ns_per_m and coulomb_force_per_command_N are 0); free them to fit "
+          "it",
+          records[r].source, records[r].command_unit.empty() ? "no unit" : records[r].command_unit);
+      break;
+    }
+  }
   return report;
 }
 
@@ -59,6 +69,7 @@ void write_summary(std::ostream& out, const HysteresisFitResult& fit,
         line->slope_se_N_per_m ? fmt::format("{:.2g}", 1e-3 * *line->slope_se_N_per_m) : "-");
   }
   if (!fit.identifiability_note.empty()) out << "warning: " << fit.identifiability_note << "\n";
+  if (!report.unused_command.empty()) out << "note: " << report.unused_command << "\n";
   for (const auto& bound : fit.on_bounds) out << "  on a bound: " << bound << "\n";
 }
 
@@ -106,6 +117,7 @@ nlohmann::json summary_json(const HysteresisFitResult& fit, const HysteresisFitR
         {"intercept_se_N", number_or_null(line->intercept_se_N)},
         {"slope_se_N_per_m", number_or_null(line->slope_se_N_per_m)}};
   }
+  if (!report.unused_command.empty()) j["unused_command"] = report.unused_command;
   return j;
 }
 

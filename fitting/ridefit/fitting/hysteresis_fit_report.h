@@ -23,6 +23,9 @@ struct HysteresisFitReport {
   // Per record; none for a record with fewer than 2 cycles through zero (a random test).
   std::vector<std::optional<signal::HysteresisFriction>> calibration;
   std::optional<FrictionCompressionLine> friction_line;  // only with compressions
+  // When the records carry a command column that the fitted model has no law for: which
+  // column, and how to fit it; empty otherwise.
+  std::string unused_command;
 };
 
 // The report of `fit` on `records`. `compression_m`, when not empty, holds one compression per

@@ -91,6 +91,16 @@ int mid_stroke_crossings(const std::vector<double>& x) {
   return crossings;
 }
 
+// At least one whole cycle: two crossings of mid-stroke, or one for a record that starts and
+// ends near mid-stroke (0 → +A → −A → 0, a sine or triangle started at its zero).
+bool holds_a_cycle(const std::vector<double>& x) {
+  const int crossings = mid_stroke_crossings(x);
+  if (crossings >= 2) return true;
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  const double mid = 0.5 * (*lo + *hi), near = 0.25 * (*hi - *lo);
+  return crossings == 1 && std::abs(x.front() - mid) <= near && std::abs(x.back() - mid) <= near;
+}
+
 }  // namespace
 
 HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
@@ -134,6 +144,12 @@ std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path&
       table.has("segment") ? "segment" : (table.has("test") ? "test" : "");
   if (segment_name.empty()) {
     require_fittable(whole);
+    if (!holds_a_cycle(whole.displacement_m)) {
+      throw InputError(fmt::format(
+          "{}: the test (rows 2-{}) moves through less than one cycle (its displacement crosses "
+          "mid-stroke {} time(s)); a loop needs at least one whole cycle",
+          file.string(), whole.time_s.size() + 1, mid_stroke_crossings(whole.displacement_m)));
+    }
     return {whole};
   }
   // Rows of each test, in the order the tests appear; a test's rows must be contiguous.
@@ -169,7 +185,7 @@ std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path&
     require_fittable(test);
     const auto [first, last] = moving_rows(test);
     test = rows_of(test, first, last, label);
-    if (mid_stroke_crossings(test.displacement_m) < 2) {
+    if (!holds_a_cycle(test.displacement_m)) {
       throw InputError(fmt::format(
           "{}: {} {} (rows {}-{}) moves through less than one cycle (its displacement crosses "
           "mid-stroke {} time(s)); a loop needs at least one whole cycle",

@@ -158,8 +158,15 @@ double StrutTestSystem::typical_magnitude(int state_index) const {
 }
 
 void StrutTestSystem::switching(double t_s, const double* y, double* g) const {
-  g[0] = model::StrutTest::path_state(y, x_.at(t_s), x_.rate_at(t_s), command_at(t_s), p_)
-             .rate_m_per_s;
+  const double rate =
+      model::StrutTest::path_state(y, x_.at(t_s), x_.rate_at(t_s), command_at(t_s), p_)
+          .rate_m_per_s;
+  int i = 0;
+  if (has_friction()) g[i++] = rate;
+  if (p_.damper_knee_velocity_m_per_s > 0.0) {
+    g[i++] = rate - p_.damper_knee_velocity_m_per_s;
+    g[i++] = rate + p_.damper_knee_velocity_m_per_s;
+  }
 }
 
 }  // namespace ridefit::simulate

@@ -59,8 +59,10 @@ class RigDisplacement {
 // The strut on the rig (model::StrutTest) as a first-order system for the integrators:
 // states [z_c, F_f] (and ū for a controlled damper with a lag), the rig's displacement imposed
 // and, for a controlled damper, the command read from `command` (null: a command of 0). Its
-// switching function is the damper's sliding velocity (the Dahl law's kink), when the strut has
-// friction.
+// switching functions are the kinks the integrator locates: the damper's sliding velocity (the
+// Dahl law's kink) when the strut has friction, and its rate at the blow-off knee in rebound and
+// compression when it has one (as the quarter car's; a stage across a kink would make the
+// discrete map, and so the fit's Jacobian, non-smooth in the knee velocity).
 class StrutTestSystem : public OdeSystem {
  public:
   StrutTestSystem(const model::StrutTestParameters<double>& parameters,
@@ -75,11 +77,14 @@ class StrutTestSystem : public OdeSystem {
   double typical_magnitude(int state_index) const override;
   double max_step_s() const override { return 0.0; }
   int switching_count() const override {
-    return p_.coulomb_force_N > 0.0 || p_.coulomb_force_per_command_N != 0.0 ? 1 : 0;
+    return (has_friction() ? 1 : 0) + (p_.damper_knee_velocity_m_per_s > 0.0 ? 2 : 0);
   }
   void switching(double t_s, const double* y, double* g) const override;
 
  private:
+  bool has_friction() const {
+    return p_.coulomb_force_N > 0.0 || p_.coulomb_force_per_command_N != 0.0;
+  }
   // The Jacobian by forward autodiff of model::StrutTest: a controlled damper (its states and the
   // command's lag are few), free play or direction-dependent friction; the plain passive law is
   // written out by hand in jacobian().

@@ -57,7 +57,7 @@ DiagnosisModel rig_passat(double coulomb_force_N = 60.0, double top_mount_N_per_
 
 bool loops_only(std::string_view id) {
   return id == "gas_force" || id == "friction_velocity_dependence" || id == "command_dependence" ||
-         id.starts_with("sensor_");
+         id == "free_play" || id.starts_with("sensor_");
 }
 
 DiagnosisModel baseline_for(std::string_view id) {
@@ -77,13 +77,13 @@ double value_in(const DiagnosisModel& m, const std::string& name) {
 TEST(EffectLibrary, HoldsTheIssuesIdsSortedAndNamesThemWhenOneIsUnknown) {
   std::vector<std::string> ids;
   for (const auto& e : effect_library()) ids.emplace_back(e->id());
-  EXPECT_EQ(ids.size(), 14u);
+  EXPECT_EQ(ids.size(), 15u);
   EXPECT_TRUE(std::is_sorted(ids.begin(), ids.end()));
   for (const char* id :
        {"damper_friction", "top_mount_compliance", "top_mount_amplitude_stiffening", "tyre_damping",
         "damper_asymmetry", "damper_digressive", "bump_stop", "tyre_lift_off",
         "friction_velocity_dependence", "gas_force", "command_dependence", "sensor_gain",
-        "sensor_delay", "sensor_band_limit"}) {
+        "sensor_delay", "sensor_band_limit", "free_play"}) {
     EXPECT_EQ(find_effect(id).id(), id);
     EXPECT_GT(find_effect(id).description().size(), 40u) << id;
   }
@@ -123,11 +123,16 @@ TEST(EffectLibrary, EachEffectStartsInsideItsBoundsAndCannotBeAddedTwice) {
             model::DamperState::kStickSlip);
   // Loops: the vehicle-only effects say why, the loop-only ones skip spectra, friction's
   // velocity dependence needs friction, and a fitted load-cell offset carries the gas preload.
-  for (const char* id : {"tyre_damping", "tyre_lift_off", "bump_stop", "damper_asymmetry",
-                         "damper_digressive", "top_mount_amplitude_stiffening"}) {
+  for (const char* id :
+       {"tyre_damping", "tyre_lift_off", "bump_stop", "top_mount_amplitude_stiffening"}) {
     EXPECT_NE(find_effect(id).not_applicable(rig_passat()), "") << id;
   }
+  // The rig runs the car's damper path: its valving and knee act on loops too.
+  for (const char* id : {"damper_asymmetry", "damper_digressive"}) {
+    EXPECT_EQ(find_effect(id).not_applicable(rig_passat()), "") << id;
+  }
   EXPECT_NE(find_effect("gas_force").not_applicable(bare_passat()), "");
+  EXPECT_NE(find_effect("free_play").not_applicable(bare_passat()), "");
   // A controlled damper's law needs a command column; the sensor delay cannot show in spectra.
   EXPECT_NE(find_effect("command_dependence").not_applicable(rig_passat()).find("command column"),
             std::string::npos);
@@ -270,6 +275,8 @@ TEST_P(LoopEffectGradient, HysteresisJacobianMatchesCentralDifferences) {
   free.push_back("damping_Ns_per_m");
   // Off the truth, so residuals are not zero.
   model::StrutTestParameters<double> at = with.strut;
+  // The multisine stays below the knee's start (0.1 m/s): put the knee where it acts.
+  if (effect.id() == "damper_digressive") at.damper_knee_velocity_m_per_s = 0.01;
   strut_parameter(at, strut_parameter_index(free[0])) *= 1.05;
   // Central differences of the discrete map the Jacobian belongs to: this run's steps, frozen.
   simulate::StrutTestSolverOptions solver;
@@ -283,7 +290,8 @@ TEST_P(LoopEffectGradient, HysteresisJacobianMatchesCentralDifferences) {
 
 INSTANTIATE_TEST_SUITE_P(LoopLibrary, LoopEffectGradient,
                          ::testing::Values("gas_force", "friction_velocity_dependence",
-                                           "damper_friction", "top_mount_compliance"));
+                                           "damper_friction", "top_mount_compliance", "free_play",
+                                           "damper_asymmetry", "damper_digressive"));
 
 }  // namespace
 }  // namespace ridefit::fitting::diagnose

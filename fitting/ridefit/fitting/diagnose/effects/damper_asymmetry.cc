@@ -17,9 +17,11 @@ class DamperAsymmetry : public Effect {
            "rough roads and the response gains even harmonics";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    // On the rig the damper path is the car's (model::damper_path_of): its valving acts there.
     if (baseline.kind == DataKind::kStrutLoops) {
-      return "the rig model's damper is symmetric (one c); fit rebound and compression strokes "
-             "separately, or diagnose vehicle spectra";
+      return baseline.strut.compression_to_rebound_ratio != 1.0
+                 ? "the baseline's damper is already asymmetric"
+                 : "";
     }
     if (baseline.car.damper_state() == model::DamperState::kStick) {
       return "the baseline's damper is locked (stick): its valving cannot act";

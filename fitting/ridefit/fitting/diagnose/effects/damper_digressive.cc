@@ -17,9 +17,11 @@ class DamperDigressive : public Effect {
            "rough roads than the linear coefficient predicts";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
+    // On the rig the damper path is the car's (model::damper_path_of): its knee acts there.
     if (baseline.kind == DataKind::kStrutLoops) {
-      return "the rig model's damper is linear (one c); diagnose vehicle spectra, or fit the loops "
-             "of each velocity range separately";
+      return baseline.strut.damper_knee_velocity_m_per_s > 0.0
+                 ? "the baseline's damper already has a knee"
+                 : "";
     }
     if (baseline.car.damper_state() == model::DamperState::kStick) {
       return "the baseline's damper is locked (stick): its valving cannot act";
@@ -30,7 +32,9 @@ class DamperDigressive : public Effect {
     return "";
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
-    const double c = baseline.car.parameters().damping_Ns_per_m;
+    const double c = baseline.kind == DataKind::kStrutLoops
+                         ? baseline.strut.damping_Ns_per_m
+                         : baseline.car.parameters().damping_Ns_per_m;
     return {{{rows::damper_knee_velocity_m_per_s.key_string(), 0.1},
              {rows::damping_above_knee_Ns_per_m.key_string(), 0.5 * c}},
             std::nullopt,
