@@ -53,7 +53,8 @@ HysteresisRecord until(const HysteresisRecord& r, double end_s) {
   return cut;
 }
 
-// The NEES file's own columns (t [s], A, D [cm], Y [V], fs, V [cm/s], F [N]), every third row.
+// The NEES file's own columns (t [s], A, D [cm], Y [V], fs, V [cm/s], F [N]), every third row
+// (as tools/validate-real converts it).
 HysteresisRecord nees_random(const fs::path& file) {
   std::ifstream in(file);
   std::string line;
@@ -65,7 +66,10 @@ HysteresisRecord nees_random(const fs::path& file) {
     if (row % 3 != 0) continue;
     std::stringstream s(line);
     std::vector<double> c;
-    for (std::string cell; std::getline(s, cell, ',');) c.push_back(std::stod(cell));
+    // The sample-rate column (fs) is filled on the first row only.
+    for (std::string cell; std::getline(s, cell, ',');) {
+      c.push_back(cell.empty() ? 0.0 : std::stod(cell));
+    }
     if (c.size() < 7) continue;
     r.time_s.push_back(c[0]);
     r.displacement_m.push_back(0.01 * c[2]);
