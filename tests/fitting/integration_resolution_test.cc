@@ -68,7 +68,14 @@ TEST(IntegrationResolution, StopsWhenThePredictedDecreaseIsBelowTheScatter) {
   EXPECT_EQ(stop(iterate(1, 499.96, true, 0.04, 0.8)), ceres::SOLVER_CONTINUE);
   // Noisy data at their optimum: cost 500 (the noise's), a step predicting a decrease of 0.05
   // (cost change −0.04, ratio −0.8) rejected, below the scatter 0.1 + √1000·√(0.2/10000) ≈ 0.24.
-  EXPECT_EQ(stop(iterate(2, 500.0, false, -0.04, -0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+  // Once is not enough (a shorter step may still be accepted)...
+  EXPECT_EQ(stop(iterate(2, 500.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_FALSE(stop.reached());
+  // ...and an accepted step in between starts the count again...
+  EXPECT_EQ(stop(iterate(3, 499.99, true, 0.01, 0.5)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(4, 499.99, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  // ...but a second such rejection in a row ends the fit.
+  EXPECT_EQ(stop(iterate(5, 499.99, false, -0.02, -0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
   EXPECT_TRUE(stop.reached());
   // A rejected step that had predicted a decrease of 50 is the model's failure, not the scatter's.
   StopAtIntegrationResolution go_on([] { return 0.1; }, 10000);

@@ -308,23 +308,39 @@ TEST(HysteresisFit, UnevenTimeStampsWithASwitchingCommand) {
   std::vector<double> t;
   for (int k = 0; k < 6000; ++k) t.push_back(std::round(k / 1001.6 * 1e4) / 1e4);
   const HysteresisRecord record = synthetic::reference_rig_record(t, x, truth, u, "uneven");
+  // From a data sheet off in every shared value: mount +30 %, σ0 half, damping a third low.
   StrutTestParameters<double> start = truth;
   start.command_lag_s = 0.004;
   start.coulomb_force_per_command_N = 500.0;
   start.damping_per_command_Ns_per_m = 1000.0;
   start.coulomb_force_N = 80.0;
+  start.top_mount_stiffness_N_per_m = 3.9e6;
+  start.dahl_sigma0_N_per_m = 1.0e6;
+  start.damping_Ns_per_m = 1000.0;
   fitting::HysteresisFitOptions options;
-  options.free = {"coulomb_force_N", "coulomb_force_per_command_N", "damping_per_command_Ns_per_m",
-                  "command_lag_s"};
-  const auto fit = fitting::fit_hysteresis({record}, start, options);
+  options.free = {"coulomb_force_N",
+                  "coulomb_force_per_command_N",
+                  "damping_per_command_Ns_per_m",
+                  "command_lag_s",
+                  "damping_Ns_per_m",
+                  "dahl_sigma0_N_per_m",
+                  "top_mount_stiffness_N_per_m"};
+  const auto fit = fitting::fit_hysteresis_from_file_and_records({record}, start, options);
   ASSERT_TRUE(fit.converged) << fit.termination;
-  EXPECT_NEAR(parameter(fit, "command_lag_s"), 0.012, 0.05 * 0.012);
-  EXPECT_NEAR(parameter(fit, "coulomb_force_per_command_N"), 1100.0, 0.03 * 1100.0);
-  EXPECT_LT(fit.nrmse_percent, 1.0);
+  EXPECT_NEAR(parameter(fit, "command_lag_s"), 0.012, 0.02 * 0.012);
+  EXPECT_NEAR(parameter(fit, "coulomb_force_per_command_N"), 1100.0, 0.02 * 1100.0);
+  EXPECT_NEAR(parameter(fit, "damping_per_command_Ns_per_m"), 2500.0, 0.02 * 2500.0);
+  EXPECT_NEAR(parameter(fit, "dahl_sigma0_N_per_m"), 2.0e6, 0.05 * 2.0e6);
+  EXPECT_NEAR(parameter(fit, "top_mount_stiffness_N_per_m"), 3.0e6, 0.03 * 3.0e6);
+  EXPECT_LT(fit.nrmse_percent, 0.5);
 }
 
 // A dry-friction device of 10 kN with 6 mm of free play and friction 18 % lower in compression:
-// fitted from a data sheet (9 kN, symmetric, no free play) with the free play's start at 2 mm.
+// fitted from a data sheet (9 kN, symmetric, no free play, a rigid mount where the real one gives
+// 2e7 N/m, damping 30 % low) with the free play's start at 2 mm. The rigid mount is held: in
+// series with σ0 it is one stiffness to the rig, so σ0 takes both (1e7 for 2e7 and 2e7). The
+// quasi-static path this runs on used to lose its equilibrium at a reversal into the slack and
+// keep the full friction force inside it; the fit then stopped after one iteration.
 TEST(HysteresisFit, TenKilonewtonFrictionWithFreePlayAndAsymmetry) {
   StrutTestParameters<double> truth{};
   truth.dahl_sigma0_N_per_m = 2.0e7;
@@ -341,17 +357,21 @@ TEST(HysteresisFit, TenKilonewtonFrictionWithFreePlayAndAsymmetry) {
   start.coulomb_force_N = 9000.0;
   start.friction_compression_to_rebound_ratio = 1.0;
   start.free_play_m = 0.002;
-  start.dahl_sigma0_N_per_m = 1.0e7;
+  start.dahl_sigma0_N_per_m = 4.0e7;
+  start.top_mount_stiffness_N_per_m = 1.0e9;
+  start.damping_Ns_per_m = 1400.0;
   fitting::HysteresisFitOptions options;
   options.free = {"coulomb_force_N", "friction_compression_to_rebound_ratio", "free_play_m",
-                  "dahl_sigma0_N_per_m"};
+                  "dahl_sigma0_N_per_m", "damping_Ns_per_m"};
   const auto fit = fitting::fit_hysteresis_from_file_and_records({record}, start, options);
   ASSERT_TRUE(fit.converged) << fit.termination;
+  EXPECT_GT(fit.iterations, 3);
   EXPECT_TRUE(fit.on_bounds.empty());
-  EXPECT_NEAR(parameter(fit, "coulomb_force_N"), 9700.0, 0.01 * 9700.0);
+  EXPECT_NEAR(parameter(fit, "coulomb_force_N"), 9700.0, 0.03 * 9700.0);
   EXPECT_NEAR(parameter(fit, "friction_compression_to_rebound_ratio"), 0.82, 0.01);
   EXPECT_NEAR(parameter(fit, "free_play_m"), 0.006, 0.03 * 0.006);
-  EXPECT_LT(fit.nrmse_percent, 1.0);
+  EXPECT_NEAR(parameter(fit, "dahl_sigma0_N_per_m"), 1.0e7, 0.2 * 1.0e7);
+  EXPECT_LT(fit.nrmse_percent, 4.0);
 }
 
 }  // namespace

@@ -419,7 +419,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   };
   StopAtIntegrationResolution stop(measure_floor, initial_residuals.size());
   solver.update_state_every_iteration = true;
-  solver.callbacks.push_back(&stop);
+  if (options.stop_at_integration_resolution) solver.callbacks.push_back(&stop);
   solver.logging_type = ceres::SILENT;
   solver.num_threads = 2;
   ceres::Solver::Summary summary;

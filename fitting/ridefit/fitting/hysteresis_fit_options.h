@@ -21,6 +21,9 @@ struct HysteresisFitOptions {
   RobustLoss loss = RobustLoss::kNone;                      // robust against outlying samples
   double loss_scale_N = 5.0;  // where the robust loss starts to discount a residual
   int max_iterations = 100;
+  // End the fit where the integration no longer resolves its cost (integration_resolution.h);
+  // false runs on to Ceres' own tolerances (to check that the stop ends where they would).
+  bool stop_at_integration_resolution = true;
   simulate::StrutTestSolverOptions solver;
   // Above this NRMSE (%, the residual's RMS over the measured force's spread about its mean) the
   // fitted model is flagged as not explaining the data.

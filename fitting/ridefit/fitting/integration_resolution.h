@@ -27,10 +27,12 @@ namespace ridefit::fitting {
 // successfully, when, with δ measured at the current iterate,
 //  - its cost is at most ½δ²: its residuals are within a few integration errors, the data
 //    explained as well as the integration resolves (noise-free records); or
-//  - a step is rejected whose decrease, as the trust region's model predicted it, is below the
-//    cost's scatter ½δ² + |r|·δ/√N (the residuals' own size times the integration error,
-//    averaged over N independent residuals): the scatter, not the model, decided the step
-//    (noisy records at their optimum).
+//  - two steps in a row are rejected whose decreases, as the trust region's model predicted them,
+//    are below the cost's scatter ½δ² + |r|·δ/√N (the residuals' own size times the integration
+//    error, averaged over N independent residuals): the scatter, not the model, decided the
+//    steps (noisy records at their optimum). One such rejection is not enough: partway along a
+//    flat valley the trust region may have shrunk to a step the scatter refuses, and the shorter
+//    step after it is then accepted and the fit goes on.
 // Far from the optimum the predicted decreases are orders of magnitude above that, so neither
 // ends a fit early; Ceres' own tolerances still apply. Needs
 // Solver::Options::update_state_every_iteration, so the parameter blocks hold the iterate.
@@ -59,10 +61,19 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
     if (summary.iteration == 0 || summary.step_is_successful) ++iterate_;
     if (iterate_ == 1 && measured_at_ == 0) measure_here();
-    if (!wants_to_stop(summary)) return ceres::SOLVER_CONTINUE;
+    if (!wants_to_stop(summary)) {
+      refused_in_a_row_ = 0;
+      return ceres::SOLVER_CONTINUE;
+    }
     if (measured_at_ != iterate_) {
       measure_here();
-      if (!wants_to_stop(summary)) return ceres::SOLVER_CONTINUE;
+      if (!wants_to_stop(summary)) {
+        refused_in_a_row_ = 0;
+        return ceres::SOLVER_CONTINUE;
+      }
+    }
+    if (!summary.step_is_successful && summary.iteration > 0 && ++refused_in_a_row_ < 2) {
+      return ceres::SOLVER_CONTINUE;
     }
     reached_ = true;
     return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
@@ -100,8 +111,9 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
   std::function<double()> measure_;
   double count_;
   double floor_ = 0.0;
-  long iterate_ = 0;      // accepted iterates so far (the start is the first)
-  long measured_at_ = 0;  // the iterate floor_ was measured at
+  long iterate_ = 0;          // accepted iterates so far (the start is the first)
+  long measured_at_ = 0;      // the iterate floor_ was measured at
+  int refused_in_a_row_ = 0;  // consecutive rejections the scatter decided
   bool reached_ = false;
 };
 

@@ -97,6 +97,8 @@ struct StrutTestParameters {
 // tens of thousands of failed Newton iterations per second of record, and it is far faster than
 // anything a rig record samples.
 inline constexpr double kQuasiStaticPathTime_s = 1e-5;
+// τ: how fast a quasi-static path returns to its equilibrium when a step has left it (below).
+inline constexpr double kQuasiStaticRecovery_s = 1e-4;
 
 // The strut assembly on the rig: top mount k_tm in series with (damper c ∥ Dahl friction), the
 // displacement x imposed across it (extension positive), and in parallel an optional gas force
@@ -115,7 +117,11 @@ inline constexpr double kQuasiStaticPathTime_s = 1e-5;
 // the share of the motion the friction element takes (all of it while sliding, s = 0; none
 // inside the free play, D' = 0), and the force F = F_f + c·z_c' + F_g0 + k_g·x + F_0. With a
 // rigid mount this is the classic F = c·x' + F_f(x). The states stay [z_c, F_f], so the output
-// and the derivatives read them as before.
+// and the derivatives read them as before. The equilibrium's residual R = F_tm − F_f − c·z_c'
+// decays with τ = kQuasiStaticRecovery_s (R' = −R/τ) rather than being assumed to stay zero:
+//   z_c' = (k·x' + (F_tm − F_f)/τ) / (k + σ0·s + c/τ),
+// the same rate as above while R = 0, and inside the slack (k = 0, F_tm = 0) a friction force
+// left from before the reversal unloads, as the real element does, instead of staying frozen.
 //
 // A controlled damper (StrutTestParameters::commanded) reads the command u(t) and, with a lag
 // τ > 0, carries the filtered command ū as a third state: y = [z_c, F_f, ū], ū' = (u − ū)/τ.
@@ -153,16 +159,25 @@ struct StrutTest {
     const T delta = x - y[0];
     // k·D'(δ) by the dead zone's slope (1 without free play).
     const T k = p.top_mount_stiffness_N_per_m * free_play_slope(delta, p.free_play_m);
-    T share = T(1.0);  // s: how much of the motion the friction element resists, 0..1+
+    // The equilibrium's residual R = F_tm − F_f − c·z_c' is made to decay, R' = −R/τ, instead of
+    // being assumed zero (Baumgarte's stabilisation of a differentiated constraint): the
+    // differentiated form alone has nothing that pulls a state back once a step has left the
+    // equilibrium. A step across a reversal into the free play's slack then froze the friction
+    // force at its sliding level for the rest of the run (a 9 kN force with nothing loading it).
+    const T c_over_tau = path.damper.rebound_damping_Ns_per_m / kQuasiStaticRecovery_s;
+    const T drive = k * x_rate + (path.path_force_N(x, y[0]) - y[1]) / kQuasiStaticRecovery_s;
+    T share = T(0.0);  // σ0·s: how much of the motion the friction element resists, s in 0..1+
     if (path.friction.active()) {
-      const T s = T(1.0) - y[1] / path.friction.level_N(x_rate) * sign_positive_at_zero(x_rate);
+      // The level at the rate the path would take while sliding (s = 0): Stribeck's curve and the
+      // direction read it.
+      const T sliding_rate = drive / (k + c_over_tau);
+      const T s =
+          T(1.0) - y[1] / path.friction.level_N(sliding_rate) * sign_positive_at_zero(sliding_rate);
       share = s > 0.0 ? signed_power(s, path.friction.exponent) : T(0.0);
       share = path.friction.sigma0_N_per_m * share;
-    } else {
-      share = T(0.0);
     }
-    const T denominator = k + share;
-    out.rate_m_per_s = denominator > 0.0 ? T(k * x_rate / denominator) : T(0.0);
+    const T denominator = k + share + c_over_tau;
+    out.rate_m_per_s = denominator > 0.0 ? T(drive / denominator) : T(0.0);
     out.force_N = y[1] + path.damper.force_N(out.rate_m_per_s);
     return out;
   }
