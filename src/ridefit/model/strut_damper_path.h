@@ -72,9 +72,9 @@ struct StrutDamperPath {
 // level affine in the command's shape ū^p (p = command_exponent; 1, the default, is affine in ū:
 // an MR damper's yield force saturates with its coil's field, p < 1, or grows faster than the
 // current at low currents, p > 1), c = c_a + c_b·ū^p and Fc = Fc_a + Fc_b·ū^p (sgn ū·|ū|^p for a
-// negative command). The damping is kept at least 1 % of c_a and the friction level at least 0.1 %
-// of |Fc_a| + |Fc_b|, so that a fit exploring a steep negative slope (or a command beyond the data
-// sheet's range) cannot make the damper's law singular.
+// negative command). The damping is kept at least 1 % of c_a and the friction level at least 0,
+// so that a fit exploring a steep negative slope (or a command beyond the data sheet's range)
+// cannot make the damper's law singular.
 template <typename T>
 struct CommandedLevels {
   T damping_Ns_per_m;
@@ -90,13 +90,7 @@ CommandedLevels<T> commanded_levels(const T& damping_Ns_per_m, const T& coulomb_
   T c = damping_Ns_per_m + damping_per_command_Ns_per_m * shaped;
   if (c < 0.01 * damping_Ns_per_m) c = T(0.01) * damping_Ns_per_m;
   T fc = coulomb_force_N + coulomb_force_per_command_N * shaped;
-  // A level of 0 would switch the friction off with its force frozen wherever it was (a Dahl
-  // element without a level holds nothing, and its force rate jumped to 0 there: the run stopped
-  // at the first command that reached it). A floor of a thousandth of the law's scale lets the
-  // element unload instead.
-  using std::abs;
-  const T floor = 1e-3 * (abs(coulomb_force_N) + abs(coulomb_force_per_command_N));
-  if (fc < floor) fc = floor;
+  if (fc < 0.0) fc = T(0.0);
   return {c, fc};
 }
 

@@ -164,8 +164,14 @@ struct StrutTest {
     // differentiated form alone has nothing that pulls a state back once a step has left the
     // equilibrium. A step across a reversal into the free play's slack then froze the friction
     // force at its sliding level for the rest of the run (a 9 kN force with nothing loading it).
-    const T c_over_tau = path.damper.rebound_damping_Ns_per_m / kQuasiStaticRecovery_s;
-    const T drive = k * x_rate + (path.path_force_N(x, y[0]) - y[1]) / kQuasiStaticRecovery_s;
+    // Without free play nothing here reads z_c (k is k_tm): no equilibrium to keep, and z_c is a
+    // passenger the error control leaves alone (StrutTestSystem::typical_magnitude).
+    const bool slack = p.free_play_m > 0.0;
+    const T c_over_tau =
+        slack ? T(path.damper.rebound_damping_Ns_per_m / kQuasiStaticRecovery_s) : T(0.0);
+    const T drive =
+        k * x_rate +
+        (slack ? T((path.path_force_N(x, y[0]) - y[1]) / kQuasiStaticRecovery_s) : T(0.0));
     T share = T(0.0);  // σ0·s: how much of the motion the friction element resists, s in 0..1+
     if (path.friction.active()) {
       // The level at the rate the path would take while sliding (s = 0): Stribeck's curve and the
