@@ -20,6 +20,14 @@ namespace ridefit {
 namespace {
 
 namespace fs = std::filesystem;
+
+// One triangle cycle of ±3 mm at 1 mm/s (12 s), repeating: the loops these tests fit.
+double triangle_m(double time_s) {
+  const double phase = std::fmod(time_s, 12.0) / 12.0;
+  return phase < 0.25   ? 0.012 * phase
+         : phase < 0.75 ? 0.006 - 0.012 * phase
+                        : -0.012 + 0.012 * phase;
+}
 using testing::run_cli;
 
 class FitCli : public ::testing::Test {
@@ -37,12 +45,7 @@ class FitCli : public ::testing::Test {
   // triangle: not the ESDIRK run on sampled input that the fit uses. Displacement in mm.
   std::string loop() const {
     const model::StrutTestParameters<double> p{2.2e6, 40.0, 1.0, 420000.0, 1000.0, 0, 0, 0};
-    auto x = [](double time) {
-      const double phase = time / 12.0;
-      return phase < 0.25   ? 0.012 * phase
-             : phase < 0.75 ? 0.006 - 0.012 * phase
-                            : -0.012 + 0.012 * phase;
-    };
+    const auto x = triangle_m;
     std::vector<double> t;
     for (int k = 0; k <= 1200; ++k) t.push_back(k / 100.0);
     const auto f = simulate::reference_strut_test_force(t, x, p);
@@ -142,12 +145,7 @@ class FitVerdictCli : public ::testing::Test {
   // A friction loop (triangle 3 mm at 1 mm/s, Fc 45 N) by CVODE, and optionally a command column.
   std::string loop(const std::string& command_header = "", double command_scale = 1.0) const {
     const model::StrutTestParameters<double> p{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
-    auto x = [](double time) {
-      const double phase = std::fmod(time, 12.0) / 12.0;
-      return phase < 0.25   ? 0.012 * phase
-             : phase < 0.75 ? 0.006 - 0.012 * phase
-                            : -0.012 + 0.012 * phase;
-    };
+    const auto x = triangle_m;
     std::vector<double> t;
     for (int k = 0; k <= 1200; ++k) t.push_back(k / 100.0);
     const auto f = simulate::reference_strut_test_force(t, x, p);
