@@ -44,7 +44,7 @@ class FitCli : public ::testing::Test {
   // 488, damping 1000 N·s/m against 886.9), its force by CVODE at rtol 1e-10 from the exact
   // triangle: not the ESDIRK run on sampled input that the fit uses. Displacement in mm.
   std::string loop() const {
-    const model::StrutTestParameters<double> p{2.2e6, 40.0, 1.0, 420000.0, 1000.0, 0, 0, 0};
+    const auto p = model::dahl_strut_on_rig(2.2e6, 40.0, 1.0, 420000.0, 1000.0);
     const auto x = triangle_m;
     std::vector<double> t;
     for (int k = 0; k <= 1200; ++k) t.push_back(k / 100.0);
@@ -144,7 +144,7 @@ class FitVerdictCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   // A friction loop (triangle 3 mm at 1 mm/s, Fc 45 N) by CVODE, and optionally a command column.
   std::string loop(const std::string& command_header = "", double command_scale = 1.0) const {
-    const model::StrutTestParameters<double> p{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+    const auto p = model::dahl_strut_on_rig(5e6, 45.0, 1.0, 488000.0, 886.9);
     const auto x = triangle_m;
     std::vector<double> t;
     for (int k = 0; k <= 1200; ++k) t.push_back(k / 100.0);

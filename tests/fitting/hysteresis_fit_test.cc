@@ -19,7 +19,9 @@
 namespace ridefit::fitting {
 namespace {
 
-model::StrutTestParameters<double> truth() { return {5e6, 60.0, 1.0, 488000.0, 887.0, 0, 0, 0}; }
+model::StrutTestParameters<double> truth() {
+  return model::dahl_strut_on_rig(5e6, 60.0, 1.0, 488000.0, 887.0);
+}
 
 // Quasi-static triangle, 3 mm at 1 mm/s (seed 000 Section 2.2), `cycles` cycles at 200 Hz.
 // The triangles are straight between samples: the fits interpolate them so (a spline would

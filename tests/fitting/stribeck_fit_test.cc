@@ -16,7 +16,10 @@ namespace {
 
 // The Passat strut breaking away at 90 N, sliding at 60 N above 5 mm/s.
 model::StrutTestParameters<double> truth() {
-  return {5e6, 60.0, 1.0, 488000.0, 887.0, 0, 0, 0, 90.0, 0.005};
+  auto p = model::dahl_strut_on_rig(5e6, 60.0, 1.0, 488000.0, 887.0);
+  p.static_friction_force_N = 90.0;
+  p.stribeck_velocity_m_per_s = 0.005;
+  return p;
 }
 
 // Three sines (0.7, 2.3 and 6.1 Hz) for 10 s at 1 kHz: damper speeds from 0 to ~60 mm/s.

@@ -19,8 +19,12 @@
 namespace ridefit::fitting {
 namespace {
 
-model::StrutTestParameters<double> set_a() { return {2e6, 90.0, 1.5, 600e3, 1500.0, 0, 0, 0}; }
-model::StrutTestParameters<double> set_b() { return {8e5, 30.0, 0.8, 400e3, 2600.0, 0, 0, 0}; }
+model::StrutTestParameters<double> set_a() {
+  return model::dahl_strut_on_rig(2e6, 90.0, 1.5, 600e3, 1500.0);
+}
+model::StrutTestParameters<double> set_b() {
+  return model::dahl_strut_on_rig(8e5, 30.0, 0.8, 400e3, 2600.0);
+}
 
 HysteresisRecord cvode_record(const model::StrutTestParameters<double>& p, double duration_s,
                               double noise_share = 0.0, unsigned seed = 3) {
@@ -48,14 +52,9 @@ TEST(StrutOnCvodeRecord, ForceAtTheTrueParametersWithinFiveHundredthsOfAPercent)
 void expect_recovered(const HysteresisRecord& r, const model::StrutTestParameters<double>& truth,
                       double share) {
   const auto passat = testing::passat_corner().parameters;
-  model::StrutTestParameters<double> start{passat.dahl_sigma0_N_per_m,
-                                           passat.coulomb_force_N,
-                                           passat.dahl_exponent,
-                                           passat.top_mount_stiffness_N_per_m,
-                                           passat.damping_Ns_per_m,
-                                           0,
-                                           0,
-                                           0};
+  const auto start = model::dahl_strut_on_rig(
+      passat.dahl_sigma0_N_per_m, passat.coulomb_force_N, passat.dahl_exponent,
+      passat.top_mount_stiffness_N_per_m, passat.damping_Ns_per_m);
   HysteresisFitOptions options;
   options.free = {"dahl_sigma0_N_per_m", "coulomb_force_N", "dahl_exponent",
                   "top_mount_stiffness_N_per_m", "damping_Ns_per_m"};

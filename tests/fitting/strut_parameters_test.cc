@@ -26,7 +26,7 @@ TEST(StrutParameters, EveryFitBoxLiesInsideItsRowsRange) {
 }
 
 TEST(StrutParameters, ValuesByNameAndTheModelFilesShareOfThem) {
-  const model::StrutTestParameters<double> base{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+  const auto base = model::dahl_strut_on_rig(5e6, 45.0, 1.0, 488000.0, 886.9);
   const auto p = with_strut_values(base, {{"gas_force_N", 12.0}, {"coulomb_force_N", 50.0}});
   EXPECT_EQ(p.gas_force_N, 12.0);
   EXPECT_EQ(p.coulomb_force_N, 50.0);

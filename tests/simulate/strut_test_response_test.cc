@@ -20,7 +20,11 @@ namespace {
 
 model::StrutTestParameters<double> passat_strut() {
   // seed 000's Passat strut: σ0 5e6 N/m, Fc 60 N, d 1, top mount 488 N/mm, c 887 Ns/m.
-  return {5e6, 60.0, 1.0, 488000.0, 887.0, 150.0, 2000.0, -3.0};
+  auto p = model::dahl_strut_on_rig(5e6, 60.0, 1.0, 488000.0, 887.0);
+  p.gas_force_N = 150.0;
+  p.gas_stiffness_N_per_m = 2000.0;
+  p.force_offset_N = -3.0;
+  return p;
 }
 
 double displacement(double t) { return 0.003 * std::sin(2.0 * std::numbers::pi * 1.0 * t); }
@@ -66,17 +70,12 @@ TEST(StrutTestResponse, DerivativesMatchCentralDifferencesOnFrozenSteps) {
     t.push_back(k * 2e-3);
     x.push_back(displacement(t.back()));
   }
-  auto c = [](double v) { return AD(v, Eigen::Matrix<double, 5, 1>::Zero()); };
-  const model::StrutTestParameters<AD> pa{AD(p.dahl_sigma0_N_per_m, 5, 0),
-                                          AD(p.coulomb_force_N, 5, 1),
-                                          AD(p.dahl_exponent, 5, 2),
-                                          AD(p.top_mount_stiffness_N_per_m, 5, 3),
-                                          AD(p.damping_Ns_per_m, 5, 4),
-                                          c(p.gas_force_N),
-                                          c(p.gas_stiffness_N_per_m),
-                                          c(p.force_offset_N),
-                                          c(0.0),
-                                          c(0.0)};
+  auto pa = p.cast<AD>();
+  pa.dahl_sigma0_N_per_m = AD(p.dahl_sigma0_N_per_m, 5, 0);
+  pa.coulomb_force_N = AD(p.coulomb_force_N, 5, 1);
+  pa.dahl_exponent = AD(p.dahl_exponent, 5, 2);
+  pa.top_mount_stiffness_N_per_m = AD(p.top_mount_stiffness_N_per_m, 5, 3);
+  pa.damping_Ns_per_m = AD(p.damping_Ns_per_m, 5, 4);
   const auto jets = strut_test_force<AD>(t, x, pa, p);
   ASSERT_TRUE(jets.has_value());
   // The unperturbed run's steps.
@@ -132,11 +131,17 @@ TEST(StrutTestSystem, JacobianMatchesAutodiffOfTheModel) {
           auto c = [](double v) { return AD(v, Eigen::Vector2d::Zero()); };
           const AD ya[2] = {AD(zc, 2, 0), AD(f, 2, 1)};
           AD fa[2];
-          const model::StrutTestParameters<AD> pa{
-              c(p.dahl_sigma0_N_per_m),         c(p.coulomb_force_N),  c(p.dahl_exponent),
-              c(p.top_mount_stiffness_N_per_m), c(p.damping_Ns_per_m), c(p.gas_force_N),
-              c(p.gas_stiffness_N_per_m),       c(p.force_offset_N),   c(p.static_friction_force_N),
-              c(p.stribeck_velocity_m_per_s)};
+          model::StrutTestParameters<AD> pa;
+          pa.dahl_sigma0_N_per_m = c(p.dahl_sigma0_N_per_m);
+          pa.coulomb_force_N = c(p.coulomb_force_N);
+          pa.dahl_exponent = c(p.dahl_exponent);
+          pa.top_mount_stiffness_N_per_m = c(p.top_mount_stiffness_N_per_m);
+          pa.damping_Ns_per_m = c(p.damping_Ns_per_m);
+          pa.gas_force_N = c(p.gas_force_N);
+          pa.gas_stiffness_N_per_m = c(p.gas_stiffness_N_per_m);
+          pa.force_offset_N = c(p.force_offset_N);
+          pa.static_friction_force_N = c(p.static_friction_force_N);
+          pa.stribeck_velocity_m_per_s = c(p.stribeck_velocity_m_per_s);
           model::StrutTest::derivatives(ya, c(rig.at(0.3)), c(rig.rate_at(0.3)), c(0.0), pa, fa);
           for (int row = 0; row < 2; ++row) {
             for (int col = 0; col < 2; ++col) {

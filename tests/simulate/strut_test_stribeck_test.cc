@@ -23,7 +23,10 @@ namespace {
 // The Passat strut (σ0 5e6 N/m, Fc 60 N, k_tm 488 N/mm, c 887 Ns/m, no gas or offset) breaking
 // away at Fs = 90 N and sliding at Fc above v_s = 5 mm/s.
 model::StrutTestParameters<double> stribeck_strut(double dahl_exponent = 1.0) {
-  return {5e6, 60.0, dahl_exponent, 488000.0, 887.0, 0.0, 0.0, 0.0, 90.0, 0.005};
+  auto p = model::dahl_strut_on_rig(5e6, 60.0, dahl_exponent, 488000.0, 887.0);
+  p.static_friction_force_N = 90.0;
+  p.stribeck_velocity_m_per_s = 0.005;
+  return p;
 }
 
 TEST(StrutTestStribeck, FollowsCvodeOnTheSameEquations) {
@@ -69,16 +72,11 @@ TEST(StrutTestStribeck, DerivativesMatchCentralDifferences) {
       t.push_back(k * 2e-3);
       x.push_back(std::sin(6.0 * t.back()) * 3e-3);
     }
-    const model::StrutTestParameters<AD> pa{AD(p.dahl_sigma0_N_per_m),
-                                            AD(p.coulomb_force_N, 4, 2),
-                                            AD(p.dahl_exponent),
-                                            AD(p.top_mount_stiffness_N_per_m),
-                                            AD(p.damping_Ns_per_m, 4, 3),
-                                            AD(p.gas_force_N),
-                                            AD(p.gas_stiffness_N_per_m),
-                                            AD(p.force_offset_N),
-                                            AD(p.static_friction_force_N, 4, 0),
-                                            AD(p.stribeck_velocity_m_per_s, 4, 1)};
+    auto pa = p.cast<AD>();
+    pa.coulomb_force_N = AD(p.coulomb_force_N, 4, 2);
+    pa.damping_Ns_per_m = AD(p.damping_Ns_per_m, 4, 3);
+    pa.static_friction_force_N = AD(p.static_friction_force_N, 4, 0);
+    pa.stribeck_velocity_m_per_s = AD(p.stribeck_velocity_m_per_s, 4, 1);
     const auto jets = strut_test_force<AD>(t, x, pa, p);
     ASSERT_TRUE(jets.has_value());
     // Central differences of the same discrete map: the unperturbed run's steps, frozen.

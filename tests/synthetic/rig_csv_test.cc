@@ -14,7 +14,7 @@ namespace ridefit::synthetic {
 namespace {
 
 TEST(SyntheticRigCsv, ReferenceRecordReadsBackAtThePrintedResolution) {
-  const model::StrutTestParameters<double> strut{5e6, 60.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+  const auto strut = model::dahl_strut_on_rig(5e6, 60.0, 1.0, 488000.0, 886.9);
   std::mt19937_64 rng(1);
   const SwitchingCommand current(2.0, 2.0, rng);
   const Multisine x = lab_three_sines();

@@ -19,7 +19,7 @@ namespace {
 using ridefit::fitting::HysteresisRecord;
 
 ridefit::model::StrutTestParameters<double> truth() {
-  return {5e6, 60.0, 1.0, 488000.0, 887.0, 0, 0, 0};
+  return ridefit::model::dahl_strut_on_rig(5e6, 60.0, 1.0, 488000.0, 887.0);
 }
 
 HysteresisRecord record(bool dynamic) {

@@ -39,28 +39,7 @@ std::vector<std::pair<std::string, double>> model_file_values(
 }
 
 model::StrutTestParameters<double> strut_on_rig(const model::QuarterCarParameters<double>& q) {
-  model::StrutTestParameters<double> strut{q.dahl_sigma0_N_per_m,
-                                           q.coulomb_force_N,
-                                           q.dahl_exponent,
-                                           q.top_mount_stiffness_N_per_m,
-                                           q.damping_Ns_per_m,
-                                           0.0,
-                                           0.0,
-                                           0.0,
-                                           q.static_friction_force_N,
-                                           q.stribeck_velocity_m_per_s,
-                                           q.damping_per_command_Ns_per_m,
-                                           q.coulomb_force_per_command_N,
-                                           q.command_lag_s};
-  strut.friction_compression_to_rebound_ratio = q.friction_compression_to_rebound_ratio;
-  strut.free_play_m = q.free_play_m;
-  strut.compression_to_rebound_ratio = q.compression_to_rebound_ratio;
-  strut.damper_knee_velocity_m_per_s = q.damper_knee_velocity_m_per_s;
-  strut.damping_above_knee_Ns_per_m = q.damping_above_knee_Ns_per_m;
-  strut.top_mount_small_amplitude_stiffness_N_per_m = q.top_mount_small_amplitude_stiffness_N_per_m;
-  strut.top_mount_transition_deflection_m = q.top_mount_transition_deflection_m;
-  strut.command_exponent = q.command_exponent;
-  return strut;
+  return model::StrutTestParameters<double>::on_rig(q.strut());
 }
 
 model::StrutTestParameters<double> strut_on_rig(const model::QuarterCar& car) {

@@ -84,59 +84,16 @@ model::StrutTestParameters<double> with_strut_values(model::StrutTestParameters<
 std::vector<std::pair<std::string, double>> model_file_values(
     const model::StrutTestParameters<double>& p, const std::vector<std::string>& names);
 
-// The field of `p` for kStrutParameters[index].
+// The field of `p` for kStrutParameters[index]: the strut's own (model::strut_field) for a row of
+// the damper path, else one of the rig's.
 template <typename T>
 T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
-  switch (index) {
-    case 0:
-      return p.dahl_sigma0_N_per_m;
-    case 1:
-      return p.coulomb_force_N;
-    case 2:
-      return p.dahl_exponent;
-    case 3:
-      return p.top_mount_stiffness_N_per_m;
-    case 4:
-      return p.damping_Ns_per_m;
-    case 5:
-      return p.gas_force_N;
-    case 6:
-      return p.gas_stiffness_N_per_m;
-    case 7:
-      return p.force_offset_N;
-    case 8:
-      return p.static_friction_force_N;
-    case 9:
-      return p.stribeck_velocity_m_per_s;
-    case 10:
-      return p.damping_per_command_Ns_per_m;
-    case 11:
-      return p.coulomb_force_per_command_N;
-    case 12:
-      return p.command_lag_s;
-    case 13:
-      return p.force_gain;
-    case 14:
-      return p.force_delay_s;
-    case 15:
-      return p.force_sensor_cutoff_Hz;
-    case 16:
-      return p.friction_compression_to_rebound_ratio;
-    case 17:
-      return p.free_play_m;
-    case 18:
-      return p.compression_to_rebound_ratio;
-    case 19:
-      return p.damper_knee_velocity_m_per_s;
-    case 20:
-      return p.damping_above_knee_Ns_per_m;
-    case 21:
-      return p.top_mount_small_amplitude_stiffness_N_per_m;
-    case 22:
-      return p.top_mount_transition_deflection_m;
-    default:
-      return p.command_exponent;
-  }
+  const model::ParameterInfo& row = *kStrutParameters[index].row;
+  if (const auto i = model::strut_row(row)) return model::strut_field(p.strut(), *i);
+  T* const rig[] = {&p.gas_force_N, &p.gas_stiffness_N_per_m, &p.force_offset_N,
+                    &p.force_gain,  &p.force_delay_s,         &p.force_sensor_cutoff_Hz};
+  static_assert(std::size(rig) == model::kStrutRigParameters.size());
+  return *rig[&row - model::kStrutRigParameters.data()];
 }
 
 // Read-only: the same field of a const strut (the switch above written once).

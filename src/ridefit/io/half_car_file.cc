@@ -25,8 +25,19 @@ constexpr double kSymmetricDamper = 1.0;
 // sensible partners), so they are not here.
 constexpr const char* kAxles[] = {"front", "rear"};
 constexpr std::string_view kOptionalAxleKeys[] = {
-    axle_rows::compression_to_rebound_ratio.key, axle_rows::damping_per_command_Ns_per_m.key,
-    axle_rows::coulomb_force_per_command_N.key, axle_rows::command_lag_s.key};
+    axle_rows::compression_to_rebound_ratio.key,
+    axle_rows::damper_knee_velocity_m_per_s.key,
+    axle_rows::damping_above_knee_Ns_per_m.key,
+    axle_rows::top_mount_small_amplitude_stiffness_N_per_m.key,
+    axle_rows::top_mount_transition_deflection_m.key,
+    axle_rows::static_friction_force_N.key,
+    axle_rows::stribeck_velocity_m_per_s.key,
+    axle_rows::damping_per_command_Ns_per_m.key,
+    axle_rows::coulomb_force_per_command_N.key,
+    axle_rows::command_lag_s.key,
+    axle_rows::command_exponent.key,
+    axle_rows::friction_compression_to_rebound_ratio.key,
+    axle_rows::free_play_m.key};
 
 std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlMap& axle) {
   model::AxleTopology topology;
@@ -66,15 +77,8 @@ std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlM
     p.coulomb_force_N = axle.parameter(axle_rows::coulomb_force_N);
     p.dahl_exponent = axle.parameter(axle_rows::dahl_exponent);
   }
-  // A controlled damper (the same keys and limits as the quarter car's).
-  if (axle.has(axle_rows::damping_per_command_Ns_per_m)) {
-    p.damping_per_command_Ns_per_m = axle.parameter(axle_rows::damping_per_command_Ns_per_m);
-  }
-  if (axle.has(axle_rows::coulomb_force_per_command_N)) {
-    p.coulomb_force_per_command_N = axle.parameter(axle_rows::coulomb_force_per_command_N);
-  }
-  if (axle.has(axle_rows::command_lag_s))
-    p.command_lag_s = axle.parameter(axle_rows::command_lag_s);
+  // The strut's optional effects and a controlled damper: the quarter car's keys and rules.
+  read_strut_effects(axle, p);
   axle.finish();
   return {topology, p};
 }

@@ -43,23 +43,9 @@ double number_from(const YamlMap& file, const model::ParameterInfo& row, double 
   return v;
 }
 
-// The optional physical effects, each off when its keys are absent (quarter_car_file.h).
+// The quarter car's own optional effects, each off when its keys are absent
+// (quarter_car_file.h).
 void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<double>& p) {
-  // 1. Top mount stiffer at small amplitude: k_s ≥ k_l and δ0 > 0, both or neither.
-  const bool stiffening = file.has(rows::top_mount_small_amplitude_stiffness_N_per_m) ||
-                          file.has(rows::top_mount_transition_deflection_m);
-  if (stiffening) {
-    require_with(file, rows::top_mount_small_amplitude_stiffness_N_per_m.key,
-                 rows::top_mount_transition_deflection_m.key,
-                 "the deflection where the stiffening fades");
-    require_with(file, rows::top_mount_transition_deflection_m.key,
-                 rows::top_mount_small_amplitude_stiffness_N_per_m.key,
-                 "the stiffness at zero deflection");
-    p.top_mount_small_amplitude_stiffness_N_per_m = number_from(
-        file, rows::top_mount_small_amplitude_stiffness_N_per_m, p.top_mount_stiffness_N_per_m,
-        "at least top_mount_stiffness_N_per_m, the large-amplitude stiffness");
-    p.top_mount_transition_deflection_m = file.parameter(rows::top_mount_transition_deflection_m);
-  }
   // 2. Bump stop: stiffness and clearance together, the exponent optional (default 2).
   if (file.has(rows::bump_stop_stiffness_N_per_m) || file.has(rows::bump_stop_clearance_m) ||
       file.has(rows::bump_stop_exponent)) {
@@ -80,6 +66,26 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
   if (file.has("tyre_lift_off")) {
     const std::string text = file.choice("tyre_lift_off", {"true", "false", "1", "0"});
     p.tyre_lift_off = text == "true" || text == "1";
+  }
+}
+
+}  // namespace
+
+void read_strut_effects(const YamlMap& file, model::StrutParameters<double>& p) {
+  // 1. Top mount stiffer at small amplitude: k_s ≥ k_l and δ0 > 0, both or neither.
+  const bool stiffening = file.has(rows::top_mount_small_amplitude_stiffness_N_per_m) ||
+                          file.has(rows::top_mount_transition_deflection_m);
+  if (stiffening) {
+    require_with(file, rows::top_mount_small_amplitude_stiffness_N_per_m.key,
+                 rows::top_mount_transition_deflection_m.key,
+                 "the deflection where the stiffening fades");
+    require_with(file, rows::top_mount_transition_deflection_m.key,
+                 rows::top_mount_small_amplitude_stiffness_N_per_m.key,
+                 "the stiffness at zero deflection");
+    p.top_mount_small_amplitude_stiffness_N_per_m = number_from(
+        file, rows::top_mount_small_amplitude_stiffness_N_per_m, p.top_mount_stiffness_N_per_m,
+        "at least top_mount_stiffness_N_per_m, the large-amplitude stiffness");
+    p.top_mount_transition_deflection_m = file.parameter(rows::top_mount_transition_deflection_m);
   }
   // 4. Damper blow-off knee: v_k > 0 and 0 < c_h ≤ c_r, both or neither.
   if (file.has(rows::damper_knee_velocity_m_per_s) || file.has(rows::damping_above_knee_Ns_per_m)) {
@@ -117,19 +123,13 @@ void read_optional_effects(const YamlMap& file, model::QuarterCarParameters<doub
           "at least coulomb_force_N: friction breaks away at or above its sliding level");
     }
   }
-}
-
-// 6b. Dry-friction devices: the friction's direction ratio (default 1) and free play (default 0).
-void read_dry_friction_effects(const YamlMap& file, model::QuarterCarParameters<double>& p) {
+  // 6b. Dry-friction devices: the friction's direction ratio (default 1) and free play (default 0).
   if (file.has(rows::friction_compression_to_rebound_ratio)) {
     p.friction_compression_to_rebound_ratio =
         file.parameter(rows::friction_compression_to_rebound_ratio);
   }
   if (file.has(rows::free_play_m)) p.free_play_m = file.parameter(rows::free_play_m);
-}
-
-// 6. Controlled damper: each key optional (0 = off).
-void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<double>& p) {
+  // 6. Controlled damper: each key optional (0 = off).
   if (file.has(rows::damping_per_command_Ns_per_m)) {
     p.damping_per_command_Ns_per_m = file.parameter(rows::damping_per_command_Ns_per_m);
   }
@@ -139,6 +139,8 @@ void read_controlled_damper(const YamlMap& file, model::QuarterCarParameters<dou
   if (file.has(rows::command_lag_s)) p.command_lag_s = file.parameter(rows::command_lag_s);
   if (file.has(rows::command_exponent)) p.command_exponent = file.parameter(rows::command_exponent);
 }
+
+namespace {
 
 // 7. The accelerometers' measuring chain (acceleration_sensors.h), each key optional: gains
 // (default 1), a low-pass cutoff (default 0 = none) and its order (1 or 2, only with a cutoff).
@@ -202,8 +204,7 @@ QuarterCarFile read_quarter_car(const YamlMap& file, const std::string& damper_s
     p.dahl_exponent = 1.0;
   }
   read_optional_effects(file, p);
-  read_controlled_damper(file, p);
-  read_dry_friction_effects(file, p);
+  read_strut_effects(file, p);
   read_acceleration_sensors(file, p.sensors);
   file.finish();
   return result;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "ridefit/io/model_overrides.h"
+#include "ridefit/io/yaml_map.h"
 #include "ridefit/model/quarter_car.h"
 
 namespace ridefit::io {
@@ -73,6 +74,12 @@ struct QuarterCarFile {
 
   model::QuarterCar make_model() const { return {damper_state, parameters}; }
 };
+
+// The strut's optional effects (top-mount stiffening, blow-off knee, Stribeck level, dry
+// friction's direction ratio and free play, the controlled damper's command law), each off when
+// its keys are absent: the keys and rules above, for a quarter-car file and each half-car axle
+// alike.
+void read_strut_effects(const YamlMap& file, model::StrutParameters<double>& p);
 
 // `overrides` (model_overrides.h) replace or add keys before the file is checked, and may
 // replace its damper state; "model" and "damper_state" are not keys an override may set.

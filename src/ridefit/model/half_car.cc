@@ -27,11 +27,14 @@ HalfCar::HalfCar(const HalfCarTopology& topology, const HalfCarParameters<double
 
 bool HalfCar::is_linear() const {
   auto linear = [](const AxleTopology& axle, const HalfCarAxle<double>& p) {
+    const StrutDamperPath<double> path = p.damper_path();
     if (axle.suspension == AxleSuspension::kStrut) {
       if (axle.damper_state == DamperState::kStickSlip) return false;
+      // A stiffening top mount or free play bends the path's force law.
+      if (path.top_mount.stiffening() || path.free_play_m > 0.0) return false;
       if (axle.damper_state == DamperState::kStick) return true;  // the damper never moves
     }
-    return p.damper_path().damper.symmetric();
+    return path.damper.linear();
   };
   return linear(topology_.front, parameters_.front) && linear(topology_.rear, parameters_.rear) &&
          topology_.control.law == ControlLaw::kPassive;
@@ -112,10 +115,10 @@ MassDampingStiffness assemble_mass_damping_stiffness(const HalfCarTopology& topo
         "assemble_mass_damping_stiffness: a strut's damper path adds states; use the state-space "
         "form");
   }
-  if (!p.front.damper_path().damper.symmetric() || !p.rear.damper_path().damper.symmetric()) {
+  if (!p.front.damper_path().damper.linear() || !p.rear.damper_path().damper.linear()) {
     throw std::invalid_argument(
         "assemble_mass_damping_stiffness: an asymmetric damper (compression_to_rebound_ratio != 1) "
-        "has no single damping matrix");
+        "or one with a knee has no single damping matrix");
   }
   using Vector = Eigen::Matrix<double, kHalfCarDofs, 1>;
   MassDampingStiffness m;

@@ -8,7 +8,7 @@
 
 #include "ridefit/model/kelvin_voigt.h"
 #include "ridefit/model/semi_active_control.h"
-#include "ridefit/model/strut_damper_path.h"
+#include "ridefit/model/strut_parameters.h"
 #include "ridefit/road/road_input.h"
 
 namespace ridefit::model {
@@ -28,59 +28,28 @@ enum HalfCarDof : int {
   kHalfCarDofs
 };
 
-// One axle: wheel, tyre and suspension. The strut keys are read only when the axle is a strut.
-// The damper (passive or in the strut) is an AsymmetricDamper: damping_Ns_per_m in rebound
-// (extension) and compression_to_rebound_ratio times it in compression.
+// One axle: wheel, tyre and suspension. The damper is the strut's (StrutParameters, the quarter
+// car's and the rig's own, every effect of the path included); its top mount, friction and free
+// play act only when the axle is a strut. A passive axle's damper is the path's damper alone
+// (AsymmetricDamper: damping_Ns_per_m in rebound, compression_to_rebound_ratio times it in
+// compression, with its knee). A controlled damper follows the command that asks for a
+// semi-active law's coefficient (HalfCar), u = (c_law − c)/c_b; with the passive law u = 0.
 template <typename T>
-struct HalfCarAxle {
-  T unsprung_mass_kg;
-  T tyre_stiffness_N_per_m;
-  T tyre_damping_Ns_per_m;
-  T spring_stiffness_N_per_m;
-  T damping_Ns_per_m;  // rebound (extension) coefficient c_r
-  T top_mount_stiffness_N_per_m;
-  T dahl_sigma0_N_per_m;
-  T coulomb_force_N;
-  T dahl_exponent;
-  // c_c = r·c_r. Last, with its default, so an initialiser without it keeps the symmetric damper.
-  T compression_to_rebound_ratio{1.0};
-  // A controlled damper (QuarterCarParameters): damping and friction level affine in the lagged
-  // command, c(ū) = c + c_b·ū, Fc(ū) = Fc + Fc_b·ū, ū' = (u − ū)/τ. Under a semi-active law the
-  // command u is the one that asks for the law's coefficient, u = (c_law − c)/c_b; with the
-  // passive law u = 0.
-  T damping_per_command_Ns_per_m{0.0};
-  T coulomb_force_per_command_N{0.0};
-  T command_lag_s{0.0};
+struct HalfCarAxle : StrutParameters<T> {
+  T unsprung_mass_kg{0.0};
+  T tyre_stiffness_N_per_m{0.0};
+  T tyre_damping_Ns_per_m{0.0};
+  T spring_stiffness_N_per_m{0.0};
 
-  bool commanded() const {
-    return damping_per_command_Ns_per_m != 0.0 || coulomb_force_per_command_N != 0.0;
-  }
-
-  // The damper with coefficient `rebound_damping` in rebound (the axle's own, or a
-  // controller's) and this axle's compression ratio.
-  AsymmetricDamper<T> damper(const T& rebound_damping) const {
-    return {rebound_damping, compression_to_rebound_ratio};
-  }
-  StrutDamperPath<T> damper_path() const {
-    return {{top_mount_stiffness_N_per_m},
-            damper(damping_Ns_per_m),
-            {dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent}};
-  }
   template <typename U>
   HalfCarAxle<U> cast() const {
-    return {U(unsprung_mass_kg),
-            U(tyre_stiffness_N_per_m),
-            U(tyre_damping_Ns_per_m),
-            U(spring_stiffness_N_per_m),
-            U(damping_Ns_per_m),
-            U(top_mount_stiffness_N_per_m),
-            U(dahl_sigma0_N_per_m),
-            U(coulomb_force_N),
-            U(dahl_exponent),
-            U(compression_to_rebound_ratio),
-            U(damping_per_command_Ns_per_m),
-            U(coulomb_force_per_command_N),
-            U(command_lag_s)};
+    HalfCarAxle<U> a;
+    a.strut() = this->template strut_cast<U>();
+    a.unsprung_mass_kg = U(unsprung_mass_kg);
+    a.tyre_stiffness_N_per_m = U(tyre_stiffness_N_per_m);
+    a.tyre_damping_Ns_per_m = U(tyre_damping_Ns_per_m);
+    a.spring_stiffness_N_per_m = U(spring_stiffness_N_per_m);
+    return a;
   }
 };
 
@@ -276,25 +245,28 @@ HalfCar::AxleForces<T> HalfCar::axle_forces(
   AxleForces<T> f;
   // The controller sets the rebound coefficient; the damper's compression valve gives
   // compression_to_rebound_ratio times it (SemiActiveControl).
-  T rebound = topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m);
-  f.friction_level_N = axle.coulomb_force_N;
+  const T law = topology_.control.damping(body_velocity, wheel_velocity, axle.damping_Ns_per_m);
+  StrutDamperPath<T> strut = axle.damper_path();
   if (follows_command(values)) {
     // A controlled damper reaches the law's coefficient through its command (c_b ≠ 0, checked
     // by the file reader), after the fluid's lag; the friction level moves with the command.
-    const T command = (rebound - axle.damping_Ns_per_m) / axle.damping_per_command_Ns_per_m;
+    const T command = (law - axle.damping_Ns_per_m) / axle.damping_per_command_Ns_per_m;
     T filtered = command;
     if (values.command_lag_s > 0.0) {
       const int i = topology.internal_state_count();
       filtered = internal[i];
       internal_rate[i] = (command - filtered) / axle.command_lag_s;
     }
-    const CommandedLevels<T> levels = commanded_levels(axle.damping_Ns_per_m, axle.coulomb_force_N,
-                                                       axle.damping_per_command_Ns_per_m,
-                                                       axle.coulomb_force_per_command_N, filtered);
-    rebound = levels.damping_Ns_per_m;
-    f.friction_level_N = levels.coulomb_force_N;
+    strut = axle.damper_path(filtered);
+  } else if (topology_.control.law != ControlLaw::kPassive) {
+    // An ideal semi-active damper: the law's coefficient directly, the knee's share kept.
+    if (strut.damper.has_knee()) {
+      strut.damper.damping_above_knee_Ns_per_m *= law / strut.damper.rebound_damping_Ns_per_m;
+    }
+    strut.damper.rebound_damping_Ns_per_m = law;
   }
-  const AsymmetricDamper<T> damper = axle.damper(rebound);
+  f.friction_level_N = strut.friction.coulomb_force_N;
+  const AsymmetricDamper<T>& damper = strut.damper;
   f.friction_N = T(0.0);
   T path(0.0);
   if (topology.suspension == AxleSuspension::kPassive) {
@@ -303,9 +275,6 @@ HalfCar::AxleForces<T> HalfCar::axle_forces(
     path = damper.force_N(travel_rate);
     f.damper_N = path;
   } else {
-    StrutDamperPath<T> strut = axle.damper_path();
-    strut.damper = damper;
-    strut.friction.coulomb_force_N = f.friction_level_N;
     f.damping_Ns_per_m = damper.rebound_damping_Ns_per_m;
     switch (topology.damper_state) {
       case DamperState::kStick:

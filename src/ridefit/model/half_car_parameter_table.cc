@@ -11,23 +11,15 @@ namespace qc = quarter_car_rows;
 
 constexpr std::size_t row_of(const ParameterInfo& row) { return quarter_car_row_index(row); }
 
+// The axle's own rows before the strut's (kStrutRows).
+constexpr std::size_t kAxleOwnRows = 4;
+
 // HalfCarAxle's fields in the order of half_car_axle_rows().
 double* axle_field(HalfCarAxle<double>& a, std::size_t i) {
-  double* const fields[] = {&a.unsprung_mass_kg,
-                            &a.tyre_stiffness_N_per_m,
-                            &a.tyre_damping_Ns_per_m,
-                            &a.spring_stiffness_N_per_m,
-                            &a.damping_Ns_per_m,
-                            &a.top_mount_stiffness_N_per_m,
-                            &a.dahl_sigma0_N_per_m,
-                            &a.coulomb_force_N,
-                            &a.dahl_exponent,
-                            &a.compression_to_rebound_ratio,
-                            &a.damping_per_command_Ns_per_m,
-                            &a.coulomb_force_per_command_N,
-                            &a.command_lag_s};
-  static_assert(std::size(fields) == 13);
-  return fields[i];
+  double* const own[] = {&a.unsprung_mass_kg, &a.tyre_stiffness_N_per_m, &a.tyre_damping_Ns_per_m,
+                         &a.spring_stiffness_N_per_m};
+  static_assert(std::size(own) == kAxleOwnRows);
+  return i < kAxleOwnRows ? own[i] : &strut_field(a.strut(), i - kAxleOwnRows);
 }
 
 double* body_field(HalfCarParameters<double>& p, std::size_t i) {
@@ -62,35 +54,25 @@ std::optional<std::size_t> find(const std::array<ParameterInfo, N>& rows, std::s
 std::optional<ParameterError> check_axle(const HalfCarAxle<double>& a, const AxleTopology& t,
                                          std::string_view name) {
   const auto& rows = half_car_axle_rows();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
+  for (std::size_t i = 0; i < kAxleOwnRows; ++i) {
     const ParameterInfo& row = kQuarterCarParameters[rows[i]];
     const double v = *axle_field(const_cast<HalfCarAxle<double>&>(a), i);
-    // A passive axle's damper may be 0 (a strut's rate divides by it).
-    if (rows[i] == row_of(qc::damping_Ns_per_m) && t.suspension == AxleSuspension::kPassive &&
-        v == 0.0) {
-      continue;
-    }
     if (auto error = check_range(row, v, fmt::format("{}.{}", name, row.key))) return error;
   }
-  return std::nullopt;
+  // A passive axle's damper may be 0 (a strut's rate divides by it).
+  return validate_strut(a, fmt::format("{}.", name), t.suspension == AxleSuspension::kPassive);
 }
 
 }  // namespace
 
-const std::array<std::size_t, 13>& half_car_axle_rows() {
-  static constexpr std::array<std::size_t, 13> rows{row_of(qc::unsprung_mass_kg),
-                                                    row_of(qc::tyre_stiffness_N_per_m),
-                                                    row_of(qc::tyre_damping_Ns_per_m),
-                                                    row_of(qc::spring_stiffness_N_per_m),
-                                                    row_of(qc::damping_Ns_per_m),
-                                                    row_of(qc::top_mount_stiffness_N_per_m),
-                                                    row_of(qc::dahl_sigma0_N_per_m),
-                                                    row_of(qc::coulomb_force_N),
-                                                    row_of(qc::dahl_exponent),
-                                                    row_of(qc::compression_to_rebound_ratio),
-                                                    row_of(qc::damping_per_command_Ns_per_m),
-                                                    row_of(qc::coulomb_force_per_command_N),
-                                                    row_of(qc::command_lag_s)};
+const std::array<std::size_t, kHalfCarAxleRows>& half_car_axle_rows() {
+  static constexpr std::array<std::size_t, kHalfCarAxleRows> rows = [] {
+    std::array<std::size_t, kHalfCarAxleRows> r{
+        row_of(qc::unsprung_mass_kg), row_of(qc::tyre_stiffness_N_per_m),
+        row_of(qc::tyre_damping_Ns_per_m), row_of(qc::spring_stiffness_N_per_m)};
+    for (std::size_t i = 0; i < kStrutRows.size(); ++i) r[kAxleOwnRows + i] = kStrutRows[i];
+    return r;
+  }();
   return rows;
 }
 

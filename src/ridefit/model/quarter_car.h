@@ -8,7 +8,7 @@
 #include "ridefit/model/kelvin_voigt.h"
 #include "ridefit/model/linear_spring.h"
 #include "ridefit/model/standard_gravity.h"
-#include "ridefit/model/strut_damper_path.h"
+#include "ridefit/model/strut_parameters.h"
 #include "ridefit/model/tyre_lift_off.h"
 #include "ridefit/road/road_input.h"
 
@@ -17,100 +17,49 @@ namespace ridefit::model {
 // Parameters of a MacPherson-strut quarter car, templated so Ceres can differentiate
 // with respect to them. Names follow design.md's table.
 template <typename T>
-struct QuarterCarParameters {
-  T sprung_mass_kg;
-  T unsprung_mass_kg;
-  T tyre_stiffness_N_per_m;
-  T tyre_damping_Ns_per_m;
-  T spring_stiffness_N_per_m;                 // coil spring
-  T top_mount_spring_path_stiffness_N_per_m;  // top mount, in series with the coil
-  T top_mount_stiffness_N_per_m;              // top mount, damper path
-  T damping_Ns_per_m;                         // rebound (extension) coefficient c_r
-  T dahl_sigma0_N_per_m;
-  T coulomb_force_N;
-  T dahl_exponent;
-  // Compression coefficient over rebound coefficient, c_c = r·c_r (AsymmetricDamper). Last,
-  // with its default, so a file or initialiser without it keeps the symmetric damper.
-  T compression_to_rebound_ratio{1.0};
-  // Optional physical effects, each off at its default (the keys are absent; quarter_car_file.h).
-  // Top mount (damper path) stiffer at small amplitude, amplitude_stiffening_spring.h; δ0 = 0 off.
-  T top_mount_small_amplitude_stiffness_N_per_m{0.0};
-  T top_mount_transition_deflection_m{0.0};
-  // Progressive bump stop, bump_stop.h; k_bs = 0 off.
+struct QuarterCarParameters : StrutParameters<T> {
+  T sprung_mass_kg{0.0};
+  T unsprung_mass_kg{0.0};
+  T tyre_stiffness_N_per_m{0.0};
+  T tyre_damping_Ns_per_m{0.0};
+  T spring_stiffness_N_per_m{0.0};                 // coil spring
+  T top_mount_spring_path_stiffness_N_per_m{0.0};  // top mount, in series with the coil
+  // Optional physical effects outside the damper path, each off at its default (the keys are
+  // absent; quarter_car_file.h). Progressive bump stop, bump_stop.h; k_bs = 0 off.
   T bump_stop_stiffness_N_per_m{0.0};
   T bump_stop_clearance_m{0.0};
   T bump_stop_exponent{2.0};
   // Unilateral tyre contact, tyre_lift_off.h.
   bool tyre_lift_off = false;
-  // Damper blow-off knee, asymmetric_damper.h; v_k = 0 off.
-  T damper_knee_velocity_m_per_s{0.0};
-  T damping_above_knee_Ns_per_m{0.0};
-  // Stribeck level of the Dahl element, stribeck_curve.h; v_s = 0 off.
-  T static_friction_force_N{0.0};
-  T stribeck_velocity_m_per_s{0.0};
-  // A controlled damper (strut_test.h): damping and friction level affine in the lagged command
-  // ū (commanded_levels). On the road the command comes from the record (RoadSample::command) when
-  // the car follows it (DamperCommand::kFromRoad); otherwise it is 0 (c and Fc above).
-  T damping_per_command_Ns_per_m{0.0};
-  T coulomb_force_per_command_N{0.0};
-  T command_lag_s{0.0};
   // The accelerometers' measuring chain (acceleration_sensors.h): gains and a low-pass that the
   // spectral comparisons apply to the simulated PSDs; the motion never depends on them. Ideal by
   // default.
   AccelerationSensors<T> sensors{};
-  // Dry-friction devices: the Dahl level in compression over that in rebound (dahl_friction.h;
-  // 1 symmetric) and free play in series with the damper path (free_play.h; 0 none).
-  T friction_compression_to_rebound_ratio{1.0};
-  T free_play_m{0.0};
-  // A controlled damper's command shape: levels affine in ū^p (strut_damper_path.h); 1 affine.
-  T command_exponent{1.0};
+  // The damper path (StrutParameters) is the strut's: on the road a controlled damper's command
+  // comes from the record (RoadSample::command) when the car follows it
+  // (DamperCommand::kFromRoad); otherwise it is 0 (c and Fc).
 
   template <typename U>
   QuarterCarParameters<U> cast() const {
-    return {U(sprung_mass_kg),
-            U(unsprung_mass_kg),
-            U(tyre_stiffness_N_per_m),
-            U(tyre_damping_Ns_per_m),
-            U(spring_stiffness_N_per_m),
-            U(top_mount_spring_path_stiffness_N_per_m),
-            U(top_mount_stiffness_N_per_m),
-            U(damping_Ns_per_m),
-            U(dahl_sigma0_N_per_m),
-            U(coulomb_force_N),
-            U(dahl_exponent),
-            U(compression_to_rebound_ratio),
-            U(top_mount_small_amplitude_stiffness_N_per_m),
-            U(top_mount_transition_deflection_m),
-            U(bump_stop_stiffness_N_per_m),
-            U(bump_stop_clearance_m),
-            U(bump_stop_exponent),
-            tyre_lift_off,
-            U(damper_knee_velocity_m_per_s),
-            U(damping_above_knee_Ns_per_m),
-            U(static_friction_force_N),
-            U(stribeck_velocity_m_per_s),
-            U(damping_per_command_Ns_per_m),
-            U(coulomb_force_per_command_N),
-            U(command_lag_s),
-            sensors.template cast<U>(),
-            U(friction_compression_to_rebound_ratio),
-            U(free_play_m),
-            U(command_exponent)};
+    QuarterCarParameters<U> q;
+    q.strut() = this->template strut_cast<U>();
+    q.sprung_mass_kg = U(sprung_mass_kg);
+    q.unsprung_mass_kg = U(unsprung_mass_kg);
+    q.tyre_stiffness_N_per_m = U(tyre_stiffness_N_per_m);
+    q.tyre_damping_Ns_per_m = U(tyre_damping_Ns_per_m);
+    q.spring_stiffness_N_per_m = U(spring_stiffness_N_per_m);
+    q.top_mount_spring_path_stiffness_N_per_m = U(top_mount_spring_path_stiffness_N_per_m);
+    q.bump_stop_stiffness_N_per_m = U(bump_stop_stiffness_N_per_m);
+    q.bump_stop_clearance_m = U(bump_stop_clearance_m);
+    q.bump_stop_exponent = U(bump_stop_exponent);
+    q.tyre_lift_off = tyre_lift_off;
+    q.sensors = sensors.template cast<U>();
+    return q;
   }
 
   // Coil spring in series with the top mount's spring path.
   T spring_path_stiffness_N_per_m() const {
     return series_stiffness(spring_stiffness_N_per_m, top_mount_spring_path_stiffness_N_per_m);
-  }
-  bool commanded() const {
-    return damping_per_command_Ns_per_m != 0.0 || coulomb_force_per_command_N != 0.0;
-  }
-  bool has_lag() const { return command_lag_s > 0.0; }
-  // The path at a filtered command ū (0 for a passive damper). The command moves the rebound
-  // coefficient and the friction level; the compression ratio, the knee's share and the Stribeck
-  // excess over Fc stay as they are.
-  StrutDamperPath<T> damper_path(const T& command = T(0.0)) const {
-    return damper_path_of(*this, command);
   }
   BumpStop<T> bump_stop() const {
     return {bump_stop_stiffness_N_per_m, bump_stop_clearance_m, bump_stop_exponent};

@@ -162,6 +162,70 @@ const T& quarter_car_parameter(const QuarterCarParameters<T>& p, std::size_t ind
   return quarter_car_parameter(const_cast<QuarterCarParameters<T>&>(p), index);
 }
 
+// The strut's rows (StrutParameters), in its fields' order: the damper path's parameters that
+// the quarter car, each half-car axle and the rig share.
+inline constexpr std::array<std::size_t, 18> kStrutRows{
+    quarter_car_row_index(quarter_car_rows::top_mount_stiffness_N_per_m),
+    quarter_car_row_index(quarter_car_rows::damping_Ns_per_m),
+    quarter_car_row_index(quarter_car_rows::dahl_sigma0_N_per_m),
+    quarter_car_row_index(quarter_car_rows::coulomb_force_N),
+    quarter_car_row_index(quarter_car_rows::dahl_exponent),
+    quarter_car_row_index(quarter_car_rows::compression_to_rebound_ratio),
+    quarter_car_row_index(quarter_car_rows::damper_knee_velocity_m_per_s),
+    quarter_car_row_index(quarter_car_rows::damping_above_knee_Ns_per_m),
+    quarter_car_row_index(quarter_car_rows::top_mount_small_amplitude_stiffness_N_per_m),
+    quarter_car_row_index(quarter_car_rows::top_mount_transition_deflection_m),
+    quarter_car_row_index(quarter_car_rows::static_friction_force_N),
+    quarter_car_row_index(quarter_car_rows::stribeck_velocity_m_per_s),
+    quarter_car_row_index(quarter_car_rows::friction_compression_to_rebound_ratio),
+    quarter_car_row_index(quarter_car_rows::free_play_m),
+    quarter_car_row_index(quarter_car_rows::damping_per_command_Ns_per_m),
+    quarter_car_row_index(quarter_car_rows::coulomb_force_per_command_N),
+    quarter_car_row_index(quarter_car_rows::command_lag_s),
+    quarter_car_row_index(quarter_car_rows::command_exponent),
+};
+
+// The field of the strut row kStrutRows[i].
+template <typename T>
+T& strut_field(StrutParameters<T>& s, std::size_t i) {
+  T* const fields[] = {&s.top_mount_stiffness_N_per_m,
+                       &s.damping_Ns_per_m,
+                       &s.dahl_sigma0_N_per_m,
+                       &s.coulomb_force_N,
+                       &s.dahl_exponent,
+                       &s.compression_to_rebound_ratio,
+                       &s.damper_knee_velocity_m_per_s,
+                       &s.damping_above_knee_Ns_per_m,
+                       &s.top_mount_small_amplitude_stiffness_N_per_m,
+                       &s.top_mount_transition_deflection_m,
+                       &s.static_friction_force_N,
+                       &s.stribeck_velocity_m_per_s,
+                       &s.friction_compression_to_rebound_ratio,
+                       &s.free_play_m,
+                       &s.damping_per_command_Ns_per_m,
+                       &s.coulomb_force_per_command_N,
+                       &s.command_lag_s,
+                       &s.command_exponent};
+  static_assert(sizeof(fields) / sizeof(fields[0]) == kStrutRows.size());
+  return *fields[i];
+}
+
+// The index i of `row` in kStrutRows, or none (a row the strut does not have).
+constexpr std::optional<std::size_t> strut_row(const ParameterInfo& row) {
+  for (std::size_t i = 0; i < kStrutRows.size(); ++i) {
+    if (&kQuarterCarParameters[kStrutRows[i]] == &row) return i;
+  }
+  return std::nullopt;
+}
+
+// The strut's ranges and rules (the effects' keys together or not at all, k_s >= k_l,
+// c_h <= c_r, Fs >= Fc, Stribeck only with Dahl friction); each key named with `prefix` ("front."
+// for a half-car axle). `passive_damper` allows damping_Ns_per_m = 0 (a passive half-car axle's
+// damper; a strut's rate divides by it).
+std::optional<ParameterError> validate_strut(const StrutParameters<double>& p,
+                                             std::string_view prefix = "",
+                                             bool passive_damper = false);
+
 // Every row's range and the rules between parameters that the file reader enforces (an effect's
 // keys together or not at all, k_s >= k_l, c_h <= c_r, Fs >= Fc, Stribeck only with Dahl
 // friction, a sensor order of 1 or 2): the first violation, or none. For a model edited in

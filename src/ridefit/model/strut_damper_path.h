@@ -94,32 +94,4 @@ CommandedLevels<T> commanded_levels(const T& damping_Ns_per_m, const T& coulomb_
   return {c, fc};
 }
 
-// The damper path of a parameter set at a filtered command ū, written once for every model that
-// carries a strut (the quarter car's QuarterCarParameters and the rig's StrutTestParameters name
-// their fields alike): the command moves the rebound coefficient and the friction level; the
-// compression ratio, the knee's share of the damping and the Stribeck excess over Fc stay as they
-// are.
-template <typename T, typename Parameters>
-StrutDamperPath<T> damper_path_of(const Parameters& p, const T& command) {
-  T c = p.damping_Ns_per_m;
-  T fc = p.coulomb_force_N;
-  T above_knee = p.damping_above_knee_Ns_per_m;
-  if (p.commanded()) {
-    const CommandedLevels<T> levels =
-        commanded_levels(p.damping_Ns_per_m, p.coulomb_force_N, p.damping_per_command_Ns_per_m,
-                         p.coulomb_force_per_command_N, command, p.command_exponent);
-    if (p.damper_knee_velocity_m_per_s > 0.0)
-      above_knee = above_knee * (levels.damping_Ns_per_m / c);
-    c = levels.damping_Ns_per_m;
-    fc = levels.coulomb_force_N;
-  }
-  return {{p.top_mount_stiffness_N_per_m, p.top_mount_small_amplitude_stiffness_N_per_m,
-           p.top_mount_transition_deflection_m},
-          {c, p.compression_to_rebound_ratio, p.damper_knee_velocity_m_per_s, above_knee},
-          {p.dahl_sigma0_N_per_m, fc, p.dahl_exponent,
-           p.static_friction_force_N + (fc - p.coulomb_force_N), p.stribeck_velocity_m_per_s,
-           p.friction_compression_to_rebound_ratio},
-          p.free_play_m};
-}
-
 }  // namespace ridefit::model

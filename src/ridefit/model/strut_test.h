@@ -1,32 +1,17 @@
 #pragma once
 
-#include "ridefit/model/strut_damper_path.h"
+#include "ridefit/model/strut_parameters.h"
 
 namespace ridefit::model {
 
 // Parameters of a strut on a test rig (seed 000, Section 2.2): the displacement x(t) is
-// imposed across the whole assembly, the rig measures the force. Names are the YAML keys.
+// imposed across the whole assembly, the rig measures the force. The strut is StrutParameters
+// (the cars' own); the rig adds its gas spring and the load cell. Names are the YAML keys.
 template <typename T>
-struct StrutTestParameters {
-  T dahl_sigma0_N_per_m;
-  T coulomb_force_N;
-  T dahl_exponent;
-  T top_mount_stiffness_N_per_m;
-  T damping_Ns_per_m;
-  T gas_force_N;            // gas spring preload at x = 0 (compression positive: pushes out)
-  T gas_stiffness_N_per_m;  // its rate
-  T force_offset_N;         // load-cell offset
-  // Optional Stribeck level of the Dahl element (stribeck_curve.h): Fs and v_s; v_s = 0 is off.
-  // Last, with defaults, so an initialiser without them keeps the classic Dahl law.
-  T static_friction_force_N{0.0};
-  T stribeck_velocity_m_per_s{0.0};
-  // A controlled (semi-active) damper: damping and friction level affine in the command u (the
-  // record's current in A or voltage in V) after a first-order lag, the fluid's response time:
-  //   c(ū) = c + c_b·ū,  Fc(ū) = Fc + Fc_b·ū,  dū/dt = (u − ū)/τ  (τ = 0: ū = u).
-  // The slopes are per unit of the command's SI unit; both 0 is a passive damper.
-  T damping_per_command_Ns_per_m{0.0};  // c_b [N·s/m per A or V]
-  T coulomb_force_per_command_N{0.0};   // Fc_b [N per A or V]
-  T command_lag_s{0.0};                 // τ
+struct StrutTestParameters : StrutParameters<T> {
+  T gas_force_N{0.0};            // gas spring preload at x = 0 (compression positive: pushes out)
+  T gas_stiffness_N_per_m{0.0};  // its rate
+  T force_offset_N{0.0};         // load-cell offset
   // The measurement chain (rig-only): the load cell reads gain × the force, delayed by a time
   // and passed through a low-pass of the given order (1 or 2, critically damped) at a cutoff
   // (0 = none). A gain of 1, no delay and no cutoff is an ideal sensor.
@@ -34,62 +19,45 @@ struct StrutTestParameters {
   T force_delay_s{0.0};
   T force_sensor_cutoff_Hz{0.0};
   int force_sensor_order = 1;
-  // Dry-friction devices (dahl_friction.h, free_play.h): the sliding level in compression over
-  // that in rebound, and free play in series with the damper path.
-  T friction_compression_to_rebound_ratio{1.0};
-  T free_play_m{0.0};
-  // The rest of the damper path the quarter car has (strut_damper_path.h's damper_path_of): the
-  // damper's compression ratio and blow-off knee (a bi-viscous law for an MR damper's pre-yield
-  // and post-yield slopes), the top mount's small-amplitude stiffening, and the command's shape.
-  T compression_to_rebound_ratio{1.0};
-  T damper_knee_velocity_m_per_s{0.0};
-  T damping_above_knee_Ns_per_m{0.0};
-  T top_mount_small_amplitude_stiffness_N_per_m{0.0};
-  T top_mount_transition_deflection_m{0.0};
-  T command_exponent{1.0};
+
+  // The strut's damper path on the rig, with no gas spring, no offset and an ideal load cell
+  // (rig-only, zero until fitted): a damper from a car runs on the rig as it is.
+  static StrutTestParameters on_rig(const StrutParameters<T>& strut) {
+    StrutTestParameters p;
+    p.strut() = strut;
+    return p;
+  }
 
   // The same parameters in another scalar (Jets for a Jacobian).
   template <typename U>
   StrutTestParameters<U> cast() const {
-    StrutTestParameters<U> p{U(dahl_sigma0_N_per_m),
-                             U(coulomb_force_N),
-                             U(dahl_exponent),
-                             U(top_mount_stiffness_N_per_m),
-                             U(damping_Ns_per_m),
-                             U(gas_force_N),
-                             U(gas_stiffness_N_per_m),
-                             U(force_offset_N),
-                             U(static_friction_force_N),
-                             U(stribeck_velocity_m_per_s),
-                             U(damping_per_command_Ns_per_m),
-                             U(coulomb_force_per_command_N),
-                             U(command_lag_s),
-                             U(force_gain),
-                             U(force_delay_s),
-                             U(force_sensor_cutoff_Hz),
-                             force_sensor_order,
-                             U(friction_compression_to_rebound_ratio),
-                             U(free_play_m),
-                             U(compression_to_rebound_ratio),
-                             U(damper_knee_velocity_m_per_s),
-                             U(damping_above_knee_Ns_per_m),
-                             U(top_mount_small_amplitude_stiffness_N_per_m),
-                             U(top_mount_transition_deflection_m),
-                             U(command_exponent)};
+    StrutTestParameters<U> p;
+    p.strut() = this->template strut_cast<U>();
+    p.gas_force_N = U(gas_force_N);
+    p.gas_stiffness_N_per_m = U(gas_stiffness_N_per_m);
+    p.force_offset_N = U(force_offset_N);
+    p.force_gain = U(force_gain);
+    p.force_delay_s = U(force_delay_s);
+    p.force_sensor_cutoff_Hz = U(force_sensor_cutoff_Hz);
+    p.force_sensor_order = force_sensor_order;
     return p;
   }
-
-  bool commanded() const {
-    return damping_per_command_Ns_per_m != 0.0 || coulomb_force_per_command_N != 0.0;
-  }
-  bool has_lag() const { return command_lag_s > 0.0; }
-
-  // The path at a filtered command ū (ū = 0 for a passive damper; limits in commanded_levels):
-  // the quarter car's own (damper_path_of).
-  StrutDamperPath<T> damper_path(const T& command = T(0.0)) const {
-    return damper_path_of(*this, command);
-  }
 };
+
+// The seed's Dahl strut on the rig (σ0, Fc, d, k_tm, c), every other effect off, no gas spring,
+// no offset and an ideal load cell.
+template <typename T>
+StrutTestParameters<T> dahl_strut_on_rig(const T& sigma0_N_per_m, const T& coulomb_force_N,
+                                         const T& dahl_exponent, const T& top_mount_N_per_m,
+                                         const T& damping_Ns_per_m) {
+  StrutTestParameters<T> p;
+  p.dahl_sigma0_N_per_m = sigma0_N_per_m;
+  p.coulomb_force_N = coulomb_force_N;
+  p.dahl_exponent = dahl_exponent;
+  p.top_mount_stiffness_N_per_m = top_mount_N_per_m;
+  p.damping_Ns_per_m = damping_Ns_per_m;
+  return p;
+}
 
 // A damper path whose relaxation time c/k_tm is below this [s] (a rigid mount: 1e9 N/m against
 // 1e4 N·s/m; a dry-friction device with next to no viscous damping) runs in its quasi-static

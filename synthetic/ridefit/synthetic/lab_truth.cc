@@ -5,12 +5,14 @@ namespace ridefit::synthetic {
 LoadCell lab_load_cell() { return {0.6, 10000.0 / 65536.0}; }
 
 model::StrutTestParameters<double> lab_passat_strut(double coulomb_force_N) {
-  return {5e6, coulomb_force_N, 1.0, 488000.0, 886.9, 0.0, 0.0, kLabForceOffset_N};
+  auto p = model::dahl_strut_on_rig(5e6, coulomb_force_N, 1.0, 488000.0, 886.9);
+  p.force_offset_N = kLabForceOffset_N;
+  return p;
 }
 
 model::StrutTestParameters<double> lab_mr_strut() {
-  model::StrutTestParameters<double> p{3e6,   40.0, 1.0, 500000.0,
-                                       800.0, 0.0,  0.0, kLabForceOffset_N};
+  auto p = model::dahl_strut_on_rig(3e6, 40.0, 1.0, 500000.0, 800.0);
+  p.force_offset_N = kLabForceOffset_N;
   p.damping_per_command_Ns_per_m = 1500.0;
   p.coulomb_force_per_command_N = 180.0;
   p.command_lag_s = 0.012;

@@ -21,7 +21,7 @@ TEST(ModelChanges, ChangedKeysAndTheDamperStateInTheModelFilesWords) {
 }
 
 TEST(ModelChanges, StrutRigOnlyValuesAreWordsNotKeys) {
-  const model::StrutTestParameters<double> before{5e6, 45.0, 1.0, 488000.0, 886.9, 0, 0, 0};
+  const auto before = model::dahl_strut_on_rig(5e6, 45.0, 1.0, 488000.0, 886.9);
   auto after = before;
   after.damping_Ns_per_m = 900.0;
   after.gas_force_N = 123.456789;

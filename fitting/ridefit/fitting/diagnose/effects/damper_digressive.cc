@@ -17,7 +17,7 @@ class DamperDigressive : public Effect {
            "rough roads than the linear coefficient predicts";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
-    // On the rig the damper path is the car's (model::damper_path_of): its knee acts there.
+    // On the rig the damper path is the car's (StrutParameters::damper_path): its knee acts there.
     if (baseline.kind == DataKind::kStrutLoops) {
       return baseline.strut.damper_knee_velocity_m_per_s > 0.0
                  ? "the baseline's damper already has a knee"
