@@ -26,6 +26,7 @@
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/fitting/psd_fit.h"
 #include "ridefit/fitting/psd_fit_report.h"
+#include "ridefit/fitting/quantised_displacement.h"
 #include "ridefit/fitting/robust_loss.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
@@ -99,6 +100,7 @@ fitting::HysteresisRecord record_from_dict(const py::dict& record, std::size_t i
   }
   signal::require_signal(r.displacement_m, r.source, "displacement", "m");
   signal::require_signal(r.force_N, r.source, "force", "N");
+  fitting::examine_quantised_displacement(r);  // as the CSV loaders do
   return r;
 }
 

@@ -19,6 +19,7 @@
 #include "ridefit/simulate/strut_test_system.h"
 #include "ridefit/synthetic/reference_rig_record.h"
 #include "support/cli_runner.h"
+#include "support/fitted_value.h"
 #include "support/temp_dir.h"
 
 namespace ridefit {
@@ -242,14 +243,6 @@ TEST(RealRecordCli, CommandColumnWithAPassiveModelIsReportedUnused) {
   EXPECT_NE(run.output.find("command column (V)"), std::string::npos) << run.output;
 }
 
-double parameter(const fitting::HysteresisFitResult& fit, const std::string& name) {
-  for (const auto& p : fit.parameters) {
-    if (p.name == name) return p.value;
-  }
-  ADD_FAILURE() << name << " was not fitted";
-  return 0.0;
-}
-
 // Five currents in one file, pooled: one command law from all five, started from a passive data
 // sheet (no command law; damping, friction and the mount's stiffness off by 30 % and more).
 TEST(HysteresisFit, FiveCurrentsInOneFileGiveOneCommandLaw) {
@@ -281,11 +274,12 @@ TEST(HysteresisFit, FiveCurrentsInOneFileGiveOneCommandLaw) {
   for (double nrmse : fit.record_nrmse_percent) EXPECT_LT(nrmse, 2.0);
   // Quantisation (3 µm, 3 N) is the only error left. (Levels read off all rows with |v| above
   // 0.2 of its RMS started this fit at 6.7× the damping per command, and it ended at 82 % NRMSE.)
-  EXPECT_NEAR(parameter(fit, "coulomb_force_per_command_N"), 1100.0, 0.03 * 1100.0);
-  EXPECT_NEAR(parameter(fit, "damping_per_command_Ns_per_m"), 2500.0, 0.05 * 2500.0);
-  EXPECT_NEAR(parameter(fit, "coulomb_force_N"), 150.0, 0.08 * 150.0);
-  EXPECT_NEAR(parameter(fit, "top_mount_stiffness_N_per_m"), 3.0e6, 0.05 * 3.0e6);
-  EXPECT_NEAR(parameter(fit, "force_offset_N") + parameter(fit, "gas_stiffness_N_per_m") * -0.0299,
+  EXPECT_NEAR(testing::fitted_value(fit, "coulomb_force_per_command_N"), 1100.0, 0.03 * 1100.0);
+  EXPECT_NEAR(testing::fitted_value(fit, "damping_per_command_Ns_per_m"), 2500.0, 0.05 * 2500.0);
+  EXPECT_NEAR(testing::fitted_value(fit, "coulomb_force_N"), 150.0, 0.08 * 150.0);
+  EXPECT_NEAR(testing::fitted_value(fit, "top_mount_stiffness_N_per_m"), 3.0e6, 0.05 * 3.0e6);
+  EXPECT_NEAR(testing::fitted_value(fit, "force_offset_N") +
+                  testing::fitted_value(fit, "gas_stiffness_N_per_m") * -0.0299,
               45.0 + 4000.0 * -0.0299, 5.0);
 }
 
@@ -327,11 +321,11 @@ TEST(HysteresisFit, UnevenTimeStampsWithASwitchingCommand) {
                   "top_mount_stiffness_N_per_m"};
   const auto fit = fitting::fit_hysteresis_from_file_and_records({record}, start, options);
   ASSERT_TRUE(fit.converged) << fit.termination;
-  EXPECT_NEAR(parameter(fit, "command_lag_s"), 0.012, 0.02 * 0.012);
-  EXPECT_NEAR(parameter(fit, "coulomb_force_per_command_N"), 1100.0, 0.02 * 1100.0);
-  EXPECT_NEAR(parameter(fit, "damping_per_command_Ns_per_m"), 2500.0, 0.02 * 2500.0);
-  EXPECT_NEAR(parameter(fit, "dahl_sigma0_N_per_m"), 2.0e6, 0.05 * 2.0e6);
-  EXPECT_NEAR(parameter(fit, "top_mount_stiffness_N_per_m"), 3.0e6, 0.03 * 3.0e6);
+  EXPECT_NEAR(testing::fitted_value(fit, "command_lag_s"), 0.012, 0.02 * 0.012);
+  EXPECT_NEAR(testing::fitted_value(fit, "coulomb_force_per_command_N"), 1100.0, 0.02 * 1100.0);
+  EXPECT_NEAR(testing::fitted_value(fit, "damping_per_command_Ns_per_m"), 2500.0, 0.02 * 2500.0);
+  EXPECT_NEAR(testing::fitted_value(fit, "dahl_sigma0_N_per_m"), 2.0e6, 0.05 * 2.0e6);
+  EXPECT_NEAR(testing::fitted_value(fit, "top_mount_stiffness_N_per_m"), 3.0e6, 0.03 * 3.0e6);
   EXPECT_LT(fit.nrmse_percent, 0.5);
 }
 
@@ -367,10 +361,10 @@ TEST(HysteresisFit, TenKilonewtonFrictionWithFreePlayAndAsymmetry) {
   ASSERT_TRUE(fit.converged) << fit.termination;
   EXPECT_GT(fit.iterations, 3);
   EXPECT_TRUE(fit.on_bounds.empty());
-  EXPECT_NEAR(parameter(fit, "coulomb_force_N"), 9700.0, 0.03 * 9700.0);
-  EXPECT_NEAR(parameter(fit, "friction_compression_to_rebound_ratio"), 0.82, 0.01);
-  EXPECT_NEAR(parameter(fit, "free_play_m"), 0.006, 0.03 * 0.006);
-  EXPECT_NEAR(parameter(fit, "dahl_sigma0_N_per_m"), 1.0e7, 0.2 * 1.0e7);
+  EXPECT_NEAR(testing::fitted_value(fit, "coulomb_force_N"), 9700.0, 0.03 * 9700.0);
+  EXPECT_NEAR(testing::fitted_value(fit, "friction_compression_to_rebound_ratio"), 0.82, 0.01);
+  EXPECT_NEAR(testing::fitted_value(fit, "free_play_m"), 0.006, 0.03 * 0.006);
+  EXPECT_NEAR(testing::fitted_value(fit, "dahl_sigma0_N_per_m"), 1.0e7, 0.2 * 1.0e7);
   EXPECT_LT(fit.nrmse_percent, 4.0);
 }
 

@@ -11,19 +11,12 @@
 
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/synthetic/reference_rig_record.h"
+#include "support/fitted_value.h"
 
 namespace ridefit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-double value_of(const fitting::HysteresisFitResult& fit, const std::string& name) {
-  for (const auto& p : fit.parameters) {
-    if (p.name == name) return p.value;
-  }
-  ADD_FAILURE() << name << " was not fitted";
-  return 0.0;
-}
 
 TEST(ResolutionStop, EndsAlongAFlatValleyWhereCeresWould) {
   model::StrutTestParameters<double> truth{};
@@ -58,7 +51,7 @@ TEST(ResolutionStop, EndsAlongAFlatValleyWhereCeresWould) {
   ASSERT_TRUE(full.converged) << full.termination;
   for (const char* name :
        {"damping_Ns_per_m", "damper_knee_velocity_m_per_s", "damping_above_knee_Ns_per_m"}) {
-    const double a = value_of(stopped, name), b = value_of(full, name);
+    const double a = testing::fitted_value(stopped, name), b = testing::fitted_value(full, name);
     // Both end at the same point: within a fifth of the parameter's standard error.
     const double se = stopped.parameters.empty() ? 0.0 : [&] {
       for (const auto& p : stopped.parameters) {
@@ -70,9 +63,9 @@ TEST(ResolutionStop, EndsAlongAFlatValleyWhereCeresWould) {
     EXPECT_LT(std::abs(a - b), 0.2 * se) << name << ": " << a << " against " << b;
   }
   // And that point is the truth, within what 1 % noise leaves.
-  EXPECT_NEAR(value_of(stopped, "damper_knee_velocity_m_per_s"), 0.12, 0.03 * 0.12);
-  EXPECT_NEAR(value_of(stopped, "damping_Ns_per_m"), 1500.0, 0.03 * 1500.0);
-  EXPECT_NEAR(value_of(stopped, "damping_above_knee_Ns_per_m"), 500.0, 0.03 * 500.0);
+  EXPECT_NEAR(testing::fitted_value(stopped, "damper_knee_velocity_m_per_s"), 0.12, 0.03 * 0.12);
+  EXPECT_NEAR(testing::fitted_value(stopped, "damping_Ns_per_m"), 1500.0, 0.03 * 1500.0);
+  EXPECT_NEAR(testing::fitted_value(stopped, "damping_above_knee_Ns_per_m"), 500.0, 0.03 * 500.0);
   EXPECT_LE(stopped.iterations, full.iterations);
 }
 

@@ -16,6 +16,8 @@ HysteresisFitReport report_hysteresis_fit(const std::vector<HysteresisRecord>& r
   report.start = std::move(start);
   for (const auto& r : records) {
     report.sources.push_back(r.source);
+    report.displacement.push_back(r.displacement_low_pass);
+    report.displacement_low_passed.push_back(r.displacement_low_passed);
     try {
       report.calibration.push_back(signal::hysteresis_friction(r.displacement_m, r.force_N));
     } catch (const InputError&) {
@@ -34,6 +36,21 @@ HysteresisFitReport report_hysteresis_fit(const std::vector<HysteresisRecord>& r
     }
   }
   return report;
+}
+
+std::string describe_displacement_treatment(const signal::QuantisationLowPass& t, bool applied) {
+  if (t.step == 0.0) return "displacement not quantised: " + t.reason;
+  if (t.cutoff_Hz == 0.0) {
+    return fmt::format("displacement quantised in {:.3g} µm steps, no low-pass: {}", 1e6 * t.step,
+                       t.reason);
+  }
+  return fmt::format(
+      "displacement quantised in {:.3g} µm steps: velocity noise of the steps {:.3g} mm/s RMS; a "
+      "zero-phase low-pass at {:.4g} Hz {} it to {:.3g} mm/s, giving up only what lies above the "
+      "cut-off (the record stands above its quantisation floor up to {:.4g} Hz)",
+      1e6 * t.step, 1e3 * t.velocity_noise_rms_before, t.cutoff_Hz,
+      applied ? "cut" : "(not applied) would cut", 1e3 * t.velocity_noise_rms_after,
+      t.content_up_to_Hz);
 }
 
 void write_summary(std::ostream& out, const HysteresisFitResult& fit,
@@ -61,6 +78,13 @@ void write_summary(std::ostream& out, const HysteresisFitResult& fit,
         calibration->cycles_used > 1 ? fmt::format(" ± {:.2g}", calibration->standard_deviation_N)
                                      : std::string(" (one cycle)"),
         report.sources[r]);
+  }
+  for (std::size_t r = 0; r < report.sources.size() && r < report.displacement.size(); ++r) {
+    const auto& treatment = report.displacement[r];
+    if (treatment && treatment->step > 0.0) {
+      out << "  " << describe_displacement_treatment(*treatment, report.displacement_low_passed[r])
+          << "  " << report.sources[r] << "\n";
+    }
   }
   if (const auto& line = report.friction_line) {
     out << fmt::format(
@@ -118,6 +142,20 @@ nlohmann::json summary_json(const HysteresisFitResult& fit, const HysteresisFitR
         {"slope_se_N_per_m", number_or_null(line->slope_se_N_per_m)}};
   }
   if (!report.unused_command.empty()) j["unused_command"] = report.unused_command;
+  j["displacement_treatment"] = nlohmann::json::array();
+  for (std::size_t r = 0; r < report.sources.size() && r < report.displacement.size(); ++r) {
+    const auto& t = report.displacement[r];
+    if (!t) continue;
+    j["displacement_treatment"].push_back(
+        {{"file", report.sources[r]},
+         {"quantisation_step_m", t->step},
+         {"low_pass_Hz", t->cutoff_Hz > 0.0 ? nlohmann::json(t->cutoff_Hz) : nlohmann::json()},
+         {"content_up_to_Hz", t->content_up_to_Hz},
+         {"velocity_noise_rms_before_m_per_s", t->velocity_noise_rms_before},
+         {"velocity_noise_rms_after_m_per_s", t->velocity_noise_rms_after},
+         {"low_pass_applied", static_cast<bool>(report.displacement_low_passed[r])},
+         {"note", describe_displacement_treatment(*t, report.displacement_low_passed[r])}});
+  }
   return j;
 }
 

@@ -26,7 +26,17 @@ struct HysteresisFitReport {
   // When the records carry a command column that the fitted model has no law for: which
   // column, and how to fit it; empty otherwise.
   std::string unused_command;
+  // Per record: how its displacement was treated for quantisation (empty: not examined, as for
+  // a record built in memory).
+  std::vector<std::optional<signal::QuantisationLowPass>> displacement;
+  std::vector<bool> displacement_low_passed;  // per record: the low-pass was applied
 };
+
+// One line on a record's quantised displacement: the step, the velocity noise its steps make, the
+// cut-off with what it costs in bandwidth and what it gains (applied or not), or why no low-pass
+// would help.
+std::string describe_displacement_treatment(const signal::QuantisationLowPass& treatment,
+                                            bool applied);
 
 // The report of `fit` on `records`. `compression_m`, when not empty, holds one compression per
 // record, and `fit` has coulomb_force_N per file; InputError from fit_friction_compression

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/quantised_displacement.h"
 #include "ridefit/io/command_column.h"
 #include "ridefit/io/csv_table.h"
 #include "ridefit/io/measurement_file.h"
@@ -74,6 +75,9 @@ HysteresisRecord rows_of(const HysteresisRecord& r, std::size_t first, std::size
   out.command = part(r.command);
   out.command_unit = r.command_unit;
   out.velocity_m_per_s = part(r.velocity_m_per_s);
+  // Rows of an examined record keep its displacement as it was treated.
+  out.displacement_low_pass = r.displacement_low_pass;
+  out.displacement_low_passed = r.displacement_low_passed;
   return out;
 }
 
@@ -107,6 +111,7 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
   HysteresisRecord record =
       record_from_table(io::read_measurement_table(csv_file), csv_file.string());
   require_fittable(record);
+  examine_quantised_displacement(record);
   return record;
 }
 
@@ -150,6 +155,7 @@ std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path&
           "mid-stroke {} time(s)); a loop needs at least one whole cycle",
           file.string(), whole.time_s.size() + 1, mid_stroke_crossings(whole.displacement_m)));
     }
+    examine_quantised_displacement(whole);
     return {whole};
   }
   // Rows of each test, in the order the tests appear; a test's rows must be contiguous.
@@ -193,6 +199,7 @@ std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path&
           mid_stroke_crossings(test.displacement_m)));
     }
     require_fittable(test);
+    examine_quantised_displacement(test);
     out.push_back(std::move(test));
   }
   return out;

@@ -1,9 +1,12 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "ridefit/signal/quantisation.h"
 
 namespace ridefit::fitting {
 
@@ -20,14 +23,19 @@ struct HysteresisRecord {
   // The rig's own velocity at the same samples (a `velocity[m/s]` column), empty when the record
   // has none: the model then runs on it rather than on a derivative of quantised displacement.
   std::vector<double> velocity_m_per_s{};
+  // The displacement's quantisation (quantised_displacement.h): empty until the record is
+  // examined, which the loaders do; low-passed only when asked.
+  std::optional<signal::QuantisationLowPass> displacement_low_pass{};
+  bool displacement_low_passed = false;
 };
 
 // Reads `time[...]`, `displacement[...]`, `force[...]` columns in any supported units, an
 // optional command column `current[A|mA]` or `voltage[V|mV]` and an optional `velocity[m/s]`;
-// other columns are ignored. InputError (naming file, row,
-// column) for a missing column, a time that does not increase, fewer than 20 samples, a
-// displacement that never moves or a force that never changes (signal/signal_presence.h: nothing
-// to identify), both a current and a voltage column, or a command in the wrong kind of unit.
+// other columns are ignored. A quantised displacement is examined (quantised_displacement.h).
+// InputError (naming file, row, column) for a missing column, a time that does not increase, fewer
+// than 20 samples, a displacement that never moves or a force that never changes
+// (signal/signal_presence.h: nothing to identify), both a current and a voltage column, or a
+// command in the wrong kind of unit.
 HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file);
 
 // The tests a rig file holds. Without a `segment` (or `test`) column: the whole file, as
@@ -36,7 +44,8 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file);
 // each cut to the part where the actuator moves (moving_rows) so that it starts from its own rest
 // state and the rest samples are not fitted. InputError, naming file, row and column, for a test
 // number that is not whole, a test whose rows are split, and a test that moves through less than
-// one cycle.
+// one cycle. Each test's quantised displacement is low-passed on its own
+// (quantised_displacement.h).
 std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path& file);
 
 // The rows [first, last) where the actuator moves: the rest before the motion starts and after it
