@@ -231,14 +231,15 @@ def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], m
                    loss_scale_N: float = 5.0, rtol: float = 1e-6, interpolation: str = "spline",
                    max_iterations: int = 100, compression_mm: Iterable[float] = (),
                    max_nrmse_percent: float = 10.0, output: Optional[PathLike] = None,
-                   keep: bool = False) -> Dict[str, Any]:
+                   keep: bool = False, record_weights: str = "newtons") -> Dict[str, Any]:
     """Fits the strut's parameters to rig records, as `ridefit fit hysteresis --json` does.
 
     records: one or a list of records, each a CSV path or a dict of arrays {'time_s',
     'displacement_m', 'force_N'[, 'command', 'command_unit', 'source']} (extension and
     tension positive). model: the start values (a Model, path or dict). free: parameter names
     (e.g. ['dahl_sigma0_N_per_m', 'coulomb_force_N']); per_file, bounds {name: (lo, hi)},
-    starts {name: value}, loss ('none', 'huber', 'cauchy'), ... as the CLI's flags.
+    starts {name: value}, loss ('none', 'huber', 'cauchy'), record_weights ('newtons', or
+    'relative': each record over its own force's spread), ... as the CLI's flags.
 
     Returns the CLI's JSON structure (parameters with standard errors, correlation, cost,
     nrmse_percent, explains_data, ...) plus 'fitted_force_N' (an array per record) and
@@ -253,7 +254,8 @@ def fit_hysteresis(records: Union[PathLike, Mapping[str, Any], Sequence[Any]], m
         {k: (float(v[0]), float(v[1])) for k, v in (bounds or {}).items()},
         {k: float(v) for k, v in (starts or {}).items()}, loss, float(loss_scale_N),
         float(rtol), interpolation, int(max_iterations), [float(c) for c in compression_mm],
-        float(max_nrmse_percent), os.fspath(output) if output else "", bool(keep))
+        float(max_nrmse_percent), os.fspath(output) if output else "", bool(keep),
+        record_weights)
 
 
 def fit_psd(measurement: Union[PathLike, Mapping[str, Any]], model: ModelLike,

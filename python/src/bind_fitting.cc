@@ -149,6 +149,7 @@ struct HysteresisArguments {
   double max_nrmse_percent;
   std::string output;  // the fitted model (YAML), "" for none: the CLI's -o
   bool keep;           // write it even when it does not explain the data
+  std::string record_weights;
 };
 
 // The CLI's flag checks (fit_hysteresis_command.cc), in the arguments' names.
@@ -212,6 +213,7 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
   options.bounds = a.bounds;
   options.loss = fitting::parse_robust_loss(a.loss);
   options.loss_scale_N = a.loss_scale_N;
+  options.record_weighting = fitting::parse_record_weighting(a.record_weights);
   options.solver.relative_tolerance = a.rtol;
   options.solver.interpolation = a.interpolation == "linear" ? simulate::RigInterpolation::kLinear
                                                              : simulate::RigInterpolation::kSpline;
@@ -240,9 +242,10 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
   py::list written;
   if (fit.explains_data || a.keep) {
     for (std::size_t r = 0; r < model_outputs.size(); ++r) {
-      io::write_model_with_values(model.path(), fitting::model_file_values(fit.fitted[r], a.free),
-                                  model_outputs[r],
-                                  "Fitted by ridefit.fit_hysteresis from " + model.name());
+      io::write_model_with_values(
+          model.path(),
+          fitting::model_file_values(fit.fitted[r], fitting::written_parameters(a.free, a.starts)),
+          model_outputs[r], "Fitted by ridefit.fit_hysteresis from " + model.name());
       written.append(model_outputs[r].string());
     }
   }
@@ -350,7 +353,7 @@ void bind_fitting(py::module_& m) {
          std::vector<std::string> per_file, std::map<std::string, std::pair<double, double>> bounds,
          std::map<std::string, double> starts, std::string loss, double loss_scale_N, double rtol,
          std::string interpolation, int max_iterations, std::vector<double> compression_mm,
-         double max_nrmse_percent, std::string output, bool keep) {
+         double max_nrmse_percent, std::string output, bool keep, std::string record_weights) {
         const HysteresisArguments a{std::move(free),
                                     std::move(per_file),
                                     std::move(bounds),
@@ -363,7 +366,8 @@ void bind_fitting(py::module_& m) {
                                     std::move(compression_mm),
                                     max_nrmse_percent,
                                     std::move(output),
-                                    keep};
+                                    keep,
+                                    std::move(record_weights)};
         return fit_hysteresis(records, model, a);
       },
       "ridefit.fit_hysteresis without its defaults");

@@ -83,6 +83,21 @@ TEST_F(FitCli, FitsAndWritesAModelEveryCommandAccepts) {
   EXPECT_GT(fs::file_size(plot), 1000u);
 }
 
+// A --start of a parameter the fit holds is part of the fitted model: the file written holds it
+// (it had the model file's 488 kN/m mount while the fit ran with 420 kN/m).
+TEST_F(FitCli, StartsTheFitHeldAreWrittenWithTheFittedValues) {
+  const fs::path fitted = dir_ / "fitted.yaml";
+  const auto run = run_cli("fit hysteresis " + loop() + " --model " + model() +
+                           " --free coulomb_force_N,dahl_sigma0_N_per_m --interpolation linear "
+                           "--start top_mount_stiffness_N_per_m=420000 --record-weights relative "
+                           "-o " +
+                           fitted.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto file = io::load_quarter_car(fitted);
+  EXPECT_DOUBLE_EQ(file.parameters.top_mount_stiffness_N_per_m, 420000.0);
+  EXPECT_NEAR(file.parameters.coulomb_force_N, 40.0, 0.3);
+}
+
 TEST_F(FitCli, BadInputsExitWith2AndWriteNothing) {
   const fs::path fitted = dir_ / "fitted.yaml";
   const std::string good = loop();
@@ -94,6 +109,7 @@ TEST_F(FitCli, BadInputsExitWith2AndWriteNothing) {
   };
   const std::string m = " --model " + model();
   expect_bad(good + m + " --free coulomb_force", "not a strut-test parameter");
+  expect_bad(good + m + " --free coulomb_force_N --record-weights equal", "--record-weights");
   expect_bad(good + m + " --free coulomb_force_N --bounds coulomb_force_N=100:10", "below upper");
   expect_bad(good + m + " --free coulomb_force_N --bounds coulomb_force_N=100:200",
              "outside its bounds");

@@ -20,6 +20,7 @@
 #include "ridefit/synthetic/reference_rig_record.h"
 #include "support/cli_runner.h"
 #include "support/fitted_value.h"
+#include "support/five_current_file.h"
 #include "support/temp_dir.h"
 
 namespace ridefit {
@@ -88,62 +89,19 @@ TEST(RigDisplacementWithVelocity, UsesTheMeasuredSlopesAtTheSamples) {
   }
 }
 
-// A file of five tests at five currents, as a DAQ paused between them: the time runs on, the
-// actuator rests at an offset position before and after each test, displacement quantised at
-// 3 µm and force at 3 N, a load-cell offset.
+using testing::mr_press_truth;
+
+// A file of tests at stepped currents (support/five_current_file.h) and its truth.
 struct FiveCurrentFile {
   std::string path;
   StrutTestParameters<double> truth{};
 };
 
-StrutTestParameters<double> mr_truth() {
-  StrutTestParameters<double> p{};
-  p.dahl_sigma0_N_per_m = 2.0e6;
-  p.coulomb_force_N = 150.0;
-  p.dahl_exponent = 1.0;
-  p.top_mount_stiffness_N_per_m = 3.0e6;
-  p.damping_Ns_per_m = 1500.0;
-  p.force_offset_N = 45.0;
-  p.gas_stiffness_N_per_m = 4000.0;
-  p.damping_per_command_Ns_per_m = 2500.0;
-  p.coulomb_force_per_command_N = 1100.0;
-  return p;
-}
-
 FiveCurrentFile five_current_file(const testing::TempDir& dir, int tests = 5, double cycles = 4.0) {
-  FiveCurrentFile file{(dir.path() / "five_currents.csv").string(), mr_truth()};
-  const double rate = 1000.0, f = 2.0, amplitude = 0.008, rest = -0.0299;
-  std::vector<double> time, x, force, current, segment;
-  double t0 = 0.0;
-  for (int test = 0; test < tests; ++test) {
-    const double amps = 0.25 * test;
-    const double lead = 0.3, motion = cycles / f;
-    // Rest, then a sine from rest (starting at its zero), then rest.
-    auto displacement = [&](double t) {
-      const double s = t - lead;
-      return rest + (s > 0.0 && s < motion ? amplitude * std::sin(2 * kPi * f * s) : 0.0);
-    };
-    const auto samples = static_cast<std::size_t>((2 * lead + motion) * rate);
-    const auto grid = synthetic::sample_times(samples, rate);
-    const HysteresisRecord r = synthetic::reference_rig_record(grid, displacement, file.truth,
-                                                               [amps](double) { return amps; });
-    for (std::size_t k = 0; k < samples; ++k) {
-      time.push_back(t0 + grid[k]);
-      x.push_back(3e-6 * std::round(r.displacement_m[k] / 3e-6));
-      force.push_back(3.0 * std::round(r.force_N[k] / 3.0));
-      current.push_back(amps);
-      segment.push_back(test + 1);
-    }
-    t0 += grid.back() + 25.0;  // the pause: the sample clock ran on
-  }
-  io::CsvTable table(file.path);
-  table.add("time", "s", time);
-  table.add("displacement", "m", x);
-  table.add("force", "N", force);
-  table.add("current", "A", current);
-  table.add("segment", "1", segment);
-  table.write(file.path);
-  return file;
+  testing::FiveCurrentTests run;
+  run.tests = tests;
+  run.cycles = cycles;
+  return {testing::five_current_file(dir, mr_press_truth(), run), mr_press_truth()};
 }
 
 TEST(RigTestsFile, SplitsBySegmentAndLeavesTheRestOut) {
@@ -287,7 +245,7 @@ TEST(HysteresisFit, FiveCurrentsInOneFileGiveOneCommandLaw) {
 // within the record and content to 41 Hz at 1 kHz: it runs from the start (the step limit
 // counts per sample, not only per second) and the lag is fitted.
 TEST(HysteresisFit, UnevenTimeStampsWithASwitchingCommand) {
-  StrutTestParameters<double> truth = mr_truth();
+  StrutTestParameters<double> truth = mr_press_truth();
   truth.command_lag_s = 0.012;
   truth.force_offset_N = 0.0;
   truth.gas_stiffness_N_per_m = 0.0;

@@ -48,6 +48,9 @@ def test_fit_hysteresis_refuses_what_the_cli_refuses(passat):
              "force_N": np.arange(10.0)}
     with pytest.raises(ridefit.InputError, match="at least 20"):
         ridefit.fit_hysteresis(short, passat, free=["coulomb_force_N"])
+    with pytest.raises(ridefit.InputError, match="record weights 'equal'"):
+        ridefit.fit_hysteresis(TRIANGLE, passat, free=["coulomb_force_N"],
+                               record_weights="equal")
     record = ridefit.load_hysteresis_record(TRIANGLE)
     record["force_N"][100] = np.nan
     with pytest.raises(ridefit.InputError, match=r"force_N\[100\] is nan"):

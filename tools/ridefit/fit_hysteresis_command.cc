@@ -1,5 +1,6 @@
 // ridefit fit hysteresis DATA.csv... --model M.yaml --free a,b,... [--per-file c]
 //                       [--bounds name=lo:hi]... [--start name=value]... [--loss huber|cauchy]
+//                       [--record-weights newtons|relative]
 //                       [--compression mm,...] [-o fitted.yaml] [--plot FILE.png|svg] [--json]
 // Fits the strut's parameters to rig tests (fitting/hysteresis_fit.h), writes the fitted model
 // file(s) and reports the fit (fitting/hysteresis_fit_report.h).
@@ -40,6 +41,7 @@ struct FitHysteresisFlags {
   std::vector<std::string> starts;
   std::string loss = "none";
   double loss_scale_N = 5.0;
+  std::string record_weights = "newtons";
   double relative_tolerance = 1e-6;
   std::string interpolation = "spline";
   int max_iterations = 100;
@@ -165,6 +167,7 @@ HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
   options.bounds = parse_bounds(flags.bounds);
   options.loss = fitting::parse_robust_loss(flags.loss);
   options.loss_scale_N = flags.loss_scale_N;
+  options.record_weighting = fitting::parse_record_weighting(flags.record_weights);
   options.solver.relative_tolerance = flags.relative_tolerance;
   options.solver.interpolation = flags.interpolation == "linear"
                                      ? simulate::RigInterpolation::kLinear
@@ -205,9 +208,12 @@ CommandOutcome outcome_of(const FitHysteresisFlags& flags, const HysteresisFitRu
   for (std::size_t r = 0; r < (per_file ? flags.files.size() : 1); ++r) {
     outcome.files.push_back(
         {per_file ? io::output_for_input("model.yaml", flags.files[r]).string() : "model.yaml",
-         io::model_with_values_text(flags.model_file,
-                                    fitting::model_file_values(run.fit.fitted[r], flags.free),
-                                    "Fitted by ridefit fit hysteresis from " + flags.model_file)});
+         io::model_with_values_text(
+             flags.model_file,
+             fitting::model_file_values(
+                 run.fit.fitted[r],
+                 fitting::written_parameters(flags.free, parse_overrides(flags.starts))),
+             "Fitted by ridefit fit hysteresis from " + flags.model_file)});
   }
   return outcome;
 }
@@ -297,6 +303,13 @@ void add_fit_options(CLI::App& command, FitHysteresisFlags& flags) {
       ->capture_default_str();
   command.add_option("--loss-scale", flags.loss_scale_N, "Residual [N] where the loss bends")
       ->check(positive_number("N"))
+      ->capture_default_str();
+  command
+      .add_option("--record-weights", flags.record_weights,
+                  "How records weigh against each other: newtons (every residual in N: strong "
+                  "tests dominate) or relative (each record over its own force's spread: every "
+                  "test counts by its relative misfit, e.g. five coil currents pooled)")
+      ->check(CLI::IsMember({"newtons", "relative"}))
       ->capture_default_str();
   add_tolerance_option(command, "--rtol", flags.relative_tolerance,
                        "Relative tolerance of the strut's adaptive ESDIRK integration");

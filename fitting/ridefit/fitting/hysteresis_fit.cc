@@ -59,6 +59,7 @@ struct RecordResidual {
   std::vector<std::size_t> fields;  // the parameter of each of this record's blocks
   std::vector<double> units;        // block value × unit = the parameter
   simulate::StrutTestSolverOptions solver;
+  double weight = 1.0;  // the record's residuals are scaled by this (RecordWeighting)
 
   template <typename T>
   bool operator()(T const* const* blocks, T* residuals) const {
@@ -76,7 +77,7 @@ struct RecordResidual {
                                       record->command, record->velocity_m_per_s);
     if (!force) return false;
     for (std::size_t k = 0; k < force->size(); ++k) {
-      residuals[k] = (*force)[k] - T(record->force_N[k]);
+      residuals[k] = ((*force)[k] - T(record->force_N[k])) * weight;
     }
     return true;
   }
@@ -290,6 +291,29 @@ ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
   return make_cost(functor, static_cast<int>(free.size()), static_cast<int>(record.force_N.size()));
 }
 
+// Each record's weight under `weighting`: 1, or the records' RMS spread over its own spread.
+std::vector<double> record_weights(const std::vector<HysteresisRecord>& records,
+                                   RecordWeighting weighting) {
+  std::vector<double> weights(records.size(), 1.0);
+  if (weighting == RecordWeighting::kNewtons) return weights;
+  std::vector<double> spread(records.size(), 0.0);
+  double mean_square = 0.0;
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    const auto& f = records[r].force_N;
+    if (f.empty()) continue;
+    double mean = 0.0;
+    for (double v : f) mean += v / static_cast<double>(f.size());
+    double square = 0.0;
+    for (double v : f) square += (v - mean) * (v - mean) / static_cast<double>(f.size());
+    spread[r] = std::sqrt(square);
+    mean_square += square / static_cast<double>(records.size());
+  }
+  for (std::size_t r = 0; r < records.size(); ++r) {
+    if (spread[r] > 0.0) weights[r] = std::sqrt(mean_square) / spread[r];
+  }
+  return weights;
+}
+
 double largest_force_N(const std::vector<HysteresisRecord>& records) {
   double largest = 0.0;
   for (const auto& r : records) {
@@ -357,9 +381,10 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   }
 
   // Every record's residual block, integrated at `solver`'s settings.
+  const std::vector<double> weights = record_weights(records, options.record_weighting);
   auto add_records = [&](ceres::Problem& problem, const simulate::StrutTestSolverOptions& solver) {
     for (std::size_t r = 0; r < records.size(); ++r) {
-      auto* functor = new RecordResidual{&records[r], base, {}, {}, solver};
+      auto* functor = new RecordResidual{&records[r], base, {}, {}, solver, weights[r]};
       std::vector<double*> used;
       for (std::size_t b = 0; b < blocks.size(); ++b) {
         if (blocks[b].record < 0 || blocks[b].record == static_cast<int>(r)) {
@@ -459,10 +484,18 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
       }
     }
     result.fitted.push_back(fitted);
-    const auto force = simulate::strut_test_force<double>(
-        records[r].time_s, records[r].displacement_m, fitted, fitted, options.solver,
-        records[r].command, records[r].velocity_m_per_s);
+    const auto force = run_fitted_strut(records[r], fitted, options.solver);
     result.fitted_force_N.push_back(force ? *force : std::vector<double>());
+  }
+  if (options.record_weighting == RecordWeighting::kRelative) {  // in newtons, not weighted
+    double square = 0.0;
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      const auto& fitted = result.fitted_force_N[r];
+      for (std::size_t k = 0; k < fitted.size(); ++k) {
+        square += (fitted[k] - records[r].force_N[k]) * (fitted[k] - records[r].force_N[k]);
+      }
+    }
+    result.residual_rms_N = std::sqrt(square / static_cast<double>(samples));
   }
   assess_adequacy(records, bounds, blocks, options.max_nrmse_percent, result);
   return result;

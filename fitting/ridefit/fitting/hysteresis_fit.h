@@ -66,6 +66,11 @@ ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
                                           const std::vector<std::string>& free,
                                           const simulate::StrutTestSolverOptions& solver = {});
 
+// Each record's residual weight under `weighting` (RecordWeighting): all 1 for kNewtons; for
+// kRelative the records' RMS spread over the record's own (its force's RMS about its mean).
+std::vector<double> record_weights(const std::vector<HysteresisRecord>& records,
+                                   RecordWeighting weighting);
+
 // The largest force magnitude in the records [N] (HysteresisFitOptions::force_scale_N).
 double largest_force_N(const std::vector<HysteresisRecord>& records);
 

@@ -10,6 +10,15 @@
 
 namespace ridefit::fitting {
 
+RecordWeighting parse_record_weighting(const std::string& text) {
+  if (text == "newtons") return RecordWeighting::kNewtons;
+  if (text == "relative") return RecordWeighting::kRelative;
+  throw InputError(fmt::format(
+      "record weights '{}': expected newtons (every residual in N) or relative (each record over "
+      "its own force's spread)",
+      text));
+}
+
 void HysteresisFitOptions::validate() const {
   if (free.empty()) {
     throw InputError("free parameters: name at least one parameter to fit, e.g. coulomb_force_N");

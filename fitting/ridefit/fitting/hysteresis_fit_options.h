@@ -12,6 +12,16 @@
 
 namespace ridefit::fitting {
 
+// How the records of one fit weigh against each other. kNewtons: every residual in newtons, so a
+// test at 1 A (±1.5 kN) outweighs one at 0 A (±0.2 kN) fifty-fold and the weak test's levels are
+// whatever the strong ones leave. kRelative: each record's residuals over its force's spread
+// (the RMS about its mean), rescaled so that records of equal spread keep weight 1; every test
+// then counts by its relative misfit, which is how per-test NRMSE judges a pooled fit.
+enum class RecordWeighting { kNewtons, kRelative };
+
+// "newtons" or "relative"; InputError naming the choices otherwise.
+RecordWeighting parse_record_weighting(const std::string& text);
+
 // What a hysteresis fit frees, within which bounds, and how it weighs residuals (Ceres'
 // Solver::Options style: plain fields with defaults, checked as a whole by validate()).
 struct HysteresisFitOptions {
@@ -20,6 +30,7 @@ struct HysteresisFitOptions {
   std::map<std::string, std::pair<double, double>> bounds;  // overrides of the defaults
   RobustLoss loss = RobustLoss::kNone;                      // robust against outlying samples
   double loss_scale_N = 5.0;  // where the robust loss starts to discount a residual
+  RecordWeighting record_weighting = RecordWeighting::kNewtons;
   int max_iterations = 100;
   // End the fit where the integration no longer resolves its cost (integration_resolution.h);
   // false runs on to Ceres' own tolerances (to check that the stop ends where they would).

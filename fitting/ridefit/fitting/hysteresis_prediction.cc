@@ -24,14 +24,26 @@ double nrmse_percent(const std::vector<double>& measured_N, const std::vector<do
   return spread > 0.0 ? 100.0 * std::sqrt(residual / spread) : 0.0;
 }
 
+std::optional<std::vector<double>> run_fitted_strut(
+    const HysteresisRecord& record, const model::StrutTestParameters<double>& strut,
+    const simulate::StrutTestSolverOptions& solver) {
+  auto force =
+      simulate::strut_test_force<double>(record.time_s, record.displacement_m, strut, strut, solver,
+                                         record.command, record.velocity_m_per_s);
+  if (force || solver.frozen_steps != nullptr) return force;
+  simulate::StrutTestSolverOptions patient = solver;
+  patient.max_steps_per_s *= 20.0;
+  return simulate::strut_test_force<double>(record.time_s, record.displacement_m, strut, strut,
+                                            patient, record.command, record.velocity_m_per_s);
+}
+
 std::vector<RecordPrediction> predict_records(const std::vector<HysteresisRecord>& records,
                                               const model::StrutTestParameters<double>& strut,
                                               const simulate::StrutTestSolverOptions& solver,
                                               double score_from_s) {
   std::vector<RecordPrediction> out;
   for (const auto& r : records) {
-    const auto force = simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut,
-                                                          solver, r.command, r.velocity_m_per_s);
+    const auto force = run_fitted_strut(r, strut, solver);
     if (!force) {
       throw RunError(fmt::format(
           "{}: the fitted strut cannot be solved on this record (the integrator failed)",

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,16 @@ struct RecordPrediction {
 // measured spread about its mean; 0 for a record with no spread.
 double nrmse_percent(const std::vector<double>& measured_N, const std::vector<double>& model_N,
                      std::size_t first = 0);
+
+// `strut`'s force on one record from rest at its first sample; none when the integrator fails.
+// A single run, not a fit's evaluation: when the step budget (max_steps_per_s, which keeps a
+// fit from lingering in an extreme corner) runs out it tries once more with 20 times the
+// budget. A fitted free play of micrometres with a rigid mount crosses its slack on every
+// quantisation step of a 2 mm test, about 6 000 steps per second plus as many retries, and the
+// fitted model is not wrong for needing them.
+std::optional<std::vector<double>> run_fitted_strut(const HysteresisRecord& record,
+                                                    const model::StrutTestParameters<double>& strut,
+                                                    const simulate::StrutTestSolverOptions& solver);
 
 // Runs `strut` over each record from rest at its first sample and scores samples at times >=
 // score_from_s. RunError naming the record when the model cannot be solved on it.

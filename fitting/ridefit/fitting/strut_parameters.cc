@@ -1,5 +1,7 @@
 #include "ridefit/fitting/strut_parameters.h"
 
+#include <algorithm>
+
 #include <fmt/core.h>
 
 #include "ridefit/common/errors.h"
@@ -26,6 +28,15 @@ model::StrutTestParameters<double> with_strut_values(model::StrutTestParameters<
     }
   }
   return p;
+}
+
+std::vector<std::string> written_parameters(const std::vector<std::string>& free,
+                                            const std::map<std::string, double>& starts) {
+  std::vector<std::string> names = free;
+  for (const auto& [name, value] : starts) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  return names;
 }
 
 std::vector<std::pair<std::string, double>> model_file_values(

@@ -78,6 +78,12 @@ std::size_t strut_parameter_index(std::string_view name);
 model::StrutTestParameters<double> with_strut_values(model::StrutTestParameters<double> p,
                                                      const std::map<std::string, double>& values);
 
+// What a fitted model file writes: the free parameters, then the other start values the fit
+// ran with (a --start of a parameter that is not fitted, e.g. a rigid mount for a damper on a
+// press): without them the file would not reproduce the fit.
+std::vector<std::string> written_parameters(const std::vector<std::string>& free,
+                                            const std::map<std::string, double>& starts);
+
 // The model-file keys among `names` (kStrutParameters names, in that order) with their values in
 // `p`: what a fitted model file holds. The rig-only parameters (gas force, load-cell offset and
 // chain) are no model keys and are left out.

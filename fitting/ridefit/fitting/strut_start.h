@@ -19,6 +19,8 @@ namespace ridefit::fitting {
 // with a command column). Quantities the records cannot separate are left out: on a constant-speed
 // triangle |v| hardly varies, v and sgn(v) are collinear and only the friction is estimated, since
 // a constant-speed test shows a force level, not a slope. Negative damping or friction is dropped.
+// Where the command takes more than two values, u enters as sgn(u)·|u|^p and the exponent p
+// (command_exponent) is the one of a grid from 0.2 to 3 that fits these rows best.
 // σ0 comes from the force's rise after each reversal (estimate_pre_sliding_stiffness) once Fc is
 // known; the top-mount stiffness is not estimated (in series with σ0, the rise shows their series
 // value). Keys are kStrutParameters names.

@@ -26,6 +26,12 @@ class OdeSystem {
   static constexpr int kMaxSwitchingFunctions = 8;
   virtual int switching_count() const { return 0; }
   virtual void switching(double /*t_s*/, const double* /*x*/, double* /*g*/) const {}
+  // Whether a run that records its steps for tangents may finish a stage by full Newton when the
+  // usual (modified) Newton reaches the ordinary accuracy but stalls short of the recorded one
+  // (esdirk_integrator.cc). For systems whose Jacobian turns within a step by orders of magnitude
+  // on purpose (a free play's rounded corners behind a rigid mount); elsewhere a stall means the
+  // step should shrink.
+  virtual bool polishes_recorded_stages() const { return false; }
 };
 
 }  // namespace ridefit::simulate

@@ -167,6 +167,15 @@ void StrutTestSystem::switching(double t_s, const double* y, double* g) const {
     g[i++] = rate - p_.damper_knee_velocity_m_per_s;
     g[i++] = rate + p_.damper_knee_velocity_m_per_s;
   }
+  if (p_.free_play_m > 0.0) {
+    const double deflection = x_.at(t_s) - y[0];
+    const double half = 0.5 * p_.free_play_m;
+    const double r = model::kFreePlayRoundingShare * p_.free_play_m;
+    g[i++] = deflection - (half - r);
+    g[i++] = deflection - (half + r);
+    g[i++] = deflection + (half - r);
+    g[i++] = deflection + (half + r);
+  }
 }
 
 }  // namespace ridefit::simulate

@@ -76,10 +76,19 @@ class StrutTestSystem : public OdeSystem {
   // z_c on the scale of a rig stroke (1 mm), F_f on the scale of Fc.
   double typical_magnitude(int state_index) const override;
   double max_step_s() const override { return 0.0; }
+  // The kinks a step should end on: the friction's reversal, the knee's two speeds, and the free
+  // play's four rounded corners (where D' starts and stops changing: inside them the Jacobian
+  // moves by k_tm, and a step across one rarely converges).
   int switching_count() const override {
-    return (has_friction() ? 1 : 0) + (p_.damper_knee_velocity_m_per_s > 0.0 ? 2 : 0);
+    return (has_friction() ? 1 : 0) + (p_.damper_knee_velocity_m_per_s > 0.0 ? 2 : 0) +
+           (p_.free_play_m > 0.0 ? 4 : 0);
   }
   void switching(double t_s, const double* y, double* g) const override;
+  // A quasi-static path with free play: inside a rounded corner of the slack the rate's
+  // Jacobian moves by k_tm (1e9 N/m behind a rigid mount) within a step.
+  bool polishes_recorded_stages() const override {
+    return p_.free_play_m > 0.0 && model::StrutTest::quasi_static(p_);
+  }
 
  private:
   bool has_friction() const {
