@@ -108,6 +108,14 @@ ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residual
       return make_cost<5>(functor, blocks, residuals);
     case 6:
       return make_cost<6>(functor, blocks, residuals);
+    // 9-12 free values (an MR record's command law, lag, knee and free play): in passes of 8
+    // they took two passes, 16 lanes for 9 or 10 values.
+    case 9:
+    case 10:
+      return make_cost<10>(functor, blocks, residuals);
+    case 11:
+    case 12:
+      return make_cost<12>(functor, blocks, residuals);
     default:
       return make_cost<8>(functor, blocks, residuals);
   }

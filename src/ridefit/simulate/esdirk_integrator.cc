@@ -110,6 +110,18 @@ class EsdirkSolver {
         h = t_end - t;
         last = true;
       }
+      // An input's kink at the next output time: end the step there (no sliver left behind).
+      bool lands = false;
+      if (options_.steps_end_on_outputs && frozen == nullptr && !last &&
+          next_output + 1 < times.size()) {
+        const double gap = times[next_output] - t;
+        if (h >= gap) {
+          h = gap;
+          lands = true;
+        } else if (h > 0.7 * gap) {
+          h = 0.5 * gap;
+        }
+      }
       if (frozen != nullptr) {  // the given steps, Newton converged fully, no error control
         if (static_cast<std::size_t>(accepted) >= frozen->step_count()) {
           throw RunError("ESDIRK: the frozen step sequence ends before the last output time");
@@ -129,6 +141,7 @@ class EsdirkSolver {
         if (share >= kEventMinShare && share * (1.0 + kEventOvershoot) < 1.0) {
           h *= share * (1.0 + kEventOvershoot);
           last = false;
+          lands = false;
         }
       }
       // Attempt steps from t until one is accepted.
@@ -233,6 +246,7 @@ class EsdirkSolver {
             refreshes = 0;
             h *= 0.25;
             last = false;
+            lands = false;
           }
           continue;
         }
@@ -246,6 +260,7 @@ class EsdirkSolver {
             if (share >= kEventMinShare && share * (1.0 + kEventOvershoot) < 1.0) {
               h *= share * (1.0 + kEventOvershoot);
               last = false;
+              lands = false;
               event_shortened = true;
               ++stats.events;
               continue;
@@ -266,6 +281,7 @@ class EsdirkSolver {
                                     : 0.2;
           h *= shrink;
           last = false;
+          lands = false;
           event_shortened = false;
           rejected_last = true;
           continue;
@@ -279,7 +295,7 @@ class EsdirkSolver {
                                    stage_buffer_[i].data() + n_);
           }
         }
-        const double t_new = last ? t_end : t + h;
+        const double t_new = last ? t_end : lands ? times[next_output] : t + h;
         while (next_output < times.size() && times[next_output] <= t_new) {
           const double theta = (times[next_output] - t) / h;
           double* out = trajectory.states.data() + next_output * static_cast<std::size_t>(n_);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -114,6 +115,21 @@ void apply_force_sensor(std::span<const double> time_s, const model::StrutTestPa
   for (std::size_t k = 0; k < n; ++k) force[k] = p.force_gain * physical[k] + p.force_offset_N;
 }
 
+// The integrator's options for a record: the solver's, with steps ending on the samples where
+// the inputs kink there (RigDisplacement::kinks_at_samples, or a command that changes, taken
+// as straight lines between samples, for a controlled damper).
+inline IntegratorOptions rig_integrator_options(const StrutTestSolverOptions& options,
+                                                const RigDisplacement& x,
+                                                const model::StrutTestParameters<double>& values,
+                                                std::span<const double> command) {
+  IntegratorOptions integrator = esdirk_options(options);
+  const bool command_changes =
+      values.commanded() && !command.empty() &&
+      std::any_of(command.begin(), command.end(), [&](double u) { return u != command[0]; });
+  integrator.steps_end_on_outputs = x.kinks_at_samples() || command_changes;
+  return integrator;
+}
+
 // The steps the adaptive run takes for this record and strut: to freeze them
 // (StrutTestSolverOptions::frozen_steps) when checking the tangents by finite differences.
 inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
@@ -128,8 +144,8 @@ inline EsdirkStepHistory strut_test_steps(std::span<const double> time_s,
   EsdirkStepHistory history;
   integrate_esdirk(StrutTestSystem(values, x, command.empty() ? nullptr : &u),
                    strut_test_start(values, displacement_m[0], command.empty() ? 0.0 : command[0]),
-                   std::vector<double>(time_s.begin(), time_s.end()), esdirk_options(options),
-                   &history);
+                   std::vector<double>(time_s.begin(), time_s.end()),
+                   rig_integrator_options(options, x, values, command), &history);
   return history;
 }
 
@@ -157,7 +173,7 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
                           RigInterpolation::kLinear);
   const RigDisplacement* u_or_none = command.empty() ? nullptr : &u;
   const StrutTestSystem system(values, x, u_or_none);
-  const IntegratorOptions integrator = esdirk_options(options);
+  const IntegratorOptions integrator = rig_integrator_options(options, x, values, command);
   const std::vector<double> times(time_s.begin(), time_s.end());
   const std::vector<double> y0 =
       strut_test_start(values, displacement_m[0], command.empty() ? 0.0 : command[0]);

@@ -40,6 +40,10 @@ class RigDisplacement {
   // The rig's velocity x'(t) [m/s]: the interpolant's own slope (a central difference of the exact
   // displacement for reference data).
   double rate_at(double time_s) const;
+  // Whether the velocity jumps in slope at the samples: linear pieces, the modified Akima of
+  // uneven steps and the Hermite of a measured velocity are C1 (C0 for linear) there, the uniform
+  // spline is C2 and an exact motion smooth. An integrator should end its steps on such samples.
+  bool kinks_at_samples() const { return !spline_.has_value() && !exact_m_ && time_s_.size() > 1; }
 
  private:
   double interpolate(double time_s) const;
