@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace ridefit::fitting {
@@ -26,6 +27,20 @@ TEST(IntegrationResolution, FloorIsHalfTheSquaredDifferenceOfTheTwoRuns) {
   EXPECT_DOUBLE_EQ(integration_cost_floor(r, coarse), 0.5 * (0.25 + 0.0 + 4.0));
   EXPECT_DOUBLE_EQ(coarser_tolerance(1e-6), 4e-6);
   EXPECT_DOUBLE_EQ(coarser_tolerance(0.05), 0.1);  // the integrators' largest tolerance
+}
+
+// Like with like: under a robust loss Ceres' cost is ½Σρ(r²), so the floor is ½Σρ(δ²) (Cauchy
+// with scale a: ρ(s) = a²·log(1 + s/a²)), below ½Σδ² where the differences pass the scale.
+TEST(IntegrationResolution, FloorCarriesTheFitsRobustLoss) {
+  const std::vector<double> fine = {1.0, -2.0, 30.0};
+  const std::vector<double> coarse = {0.0, 0.0, 0.0};
+  const ceres::CauchyLoss loss(5.0);
+  const double expected =
+      0.5 * 25.0 * (std::log1p(1.0 / 25.0) + std::log1p(4.0 / 25.0) + std::log1p(900.0 / 25.0));
+  EXPECT_NEAR(integration_cost_floor(fine, coarse, &loss), expected, 1e-12 * expected);
+  EXPECT_LT(integration_cost_floor(fine, coarse, &loss),
+            0.2 * integration_cost_floor(fine, coarse));
+  EXPECT_DOUBLE_EQ(integration_cost_floor(fine, coarse, nullptr), 0.5 * (1.0 + 4.0 + 900.0));
 }
 
 TEST(IntegrationResolution, StopsOnlyOnceTheCostIsAtTheScatterMeasuredThere) {
@@ -81,6 +96,30 @@ TEST(IntegrationResolution, StopsWhenThePredictedDecreaseIsBelowTheScatter) {
   StopAtIntegrationResolution go_on([] { return 0.1; }, 10000);
   EXPECT_EQ(go_on(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
   EXPECT_EQ(go_on(iterate(1, 500.0, false, -40.0, -0.8)), ceres::SOLVER_CONTINUE);
+}
+
+// The gradient condition: two rejections the scatter decided end the fit only if the whole
+// Gauss-Newton step promises less than the scatter too. A trust region shrunk partway along a flat
+// valley promises 0.05 for its own step while the step to the valley's floor promises 5.
+TEST(IntegrationResolution, RejectionsStopOnlyWhenTheWholeStepPromisesLittleToo) {
+  double promise = 5.0;
+  int asked = 0;
+  StopAtIntegrationResolution stop([] { return 0.1; }, 10000,
+                                   [&] {
+                                     ++asked;
+                                     return promise;
+                                   });
+  EXPECT_EQ(stop(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(1, 500.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(2, 500.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(asked, 1);  // asked only when the rejections would end the fit
+  EXPECT_FALSE(stop.reached());
+  // At the valley's floor the whole step promises 0.01, below the scatter of about 0.24.
+  promise = 0.01;
+  EXPECT_EQ(stop(iterate(3, 499.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(4, 499.0, false, -0.04, -0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+  EXPECT_EQ(asked, 2);
+  EXPECT_TRUE(stop.reached());
 }
 
 TEST(IntegrationResolution, NoFloorNoStop) {

@@ -233,10 +233,9 @@ TEST(PsdFit, FivePercentSensorNoiseMovesTheFitLessThanTwoPercent) {
     const NoiseFloors added = add_white_noise(noisy, 0.05, seed);
     // The estimate of the floor against the noise added.
     const NoiseFloors estimated = noise_floors(noisy, options);
-    EXPECT_GT(estimated.body_psd, added.body_psd / 1.5);
-    EXPECT_LT(estimated.body_psd, added.body_psd * 1.5);
-    EXPECT_GT(estimated.wheel_psd, added.wheel_psd / 1.5);
-    EXPECT_LT(estimated.wheel_psd, added.wheel_psd * 1.5);
+    // Within 20 % (measured over the three seeds: body 0.854–0.952, wheel 0.863–1.083).
+    EXPECT_NEAR(estimated.body_psd / added.body_psd, 1.0, 0.2);
+    EXPECT_NEAR(estimated.wheel_psd / added.wheel_psd, 1.0, 0.2);
     const auto with_floor = fit_psd(noisy, car, options);
     const auto without_floor = fit_psd(noisy, car, plain);
     ASSERT_TRUE(with_floor.converged && without_floor.converged);

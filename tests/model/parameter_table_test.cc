@@ -132,7 +132,8 @@ TEST(ParameterTable, EachNamedRowIsTheRowOfItsKey) {
                 {&strut_rig_rows::force_offset_N, "force_offset_N"},
                 {&strut_rig_rows::force_gain, "force_gain"},
                 {&strut_rig_rows::force_delay_s, "force_delay_s"},
-                {&strut_rig_rows::force_sensor_cutoff_Hz, "force_sensor_cutoff_Hz"}});
+                {&strut_rig_rows::force_sensor_cutoff_Hz, "force_sensor_cutoff_Hz"},
+                {&strut_rig_rows::moving_mass_kg, "moving_mass_kg"}});
   EXPECT_EQ(quarter_car_row_index(quarter_car_rows::coulomb_force_N),
             quarter_car_parameter_index("coulomb_force_N").value_or(kQuarterCarParameters.size()));
 }

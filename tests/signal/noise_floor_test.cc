@@ -49,8 +49,9 @@ TEST(NoiseFloor, NoiseUnderARolledOffResponse) {
   for (std::size_t k = 0; k < x.size(); ++k) x[k] += noise[k];
   const double truth = 2.0 * sigma * sigma / kRate_Hz;
   const double estimate = estimate_white_noise_floor(x, kRate_Hz, 30.0);
-  EXPECT_GT(estimate, truth / 1.5);
-  EXPECT_LT(estimate, 1.5 * truth);
+  // Measured 0.815 of the truth: the estimate errs low by design (noise_floor.h: the power law
+  // takes part of the floor where the response still falls); within 0.06 of that.
+  EXPECT_NEAR(estimate / truth, 0.815, 0.06);
 }
 
 // A response whose PSD falls as f⁻² all the way to the Nyquist frequency (random phases,

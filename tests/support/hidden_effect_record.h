@@ -1,5 +1,7 @@
 #pragma once
 
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <random>
@@ -56,6 +58,19 @@ inline fitting::PsdMeasurement hidden_effect_record(
   m.body_acc_m_per_s2 = study::measure(run.body_acc_m_per_s2, sample_rate_Hz, sensor, rng);
   m.wheel_acc_m_per_s2 = study::measure(run.wheel_acc_m_per_s2, sample_rate_Hz, sensor, rng);
   return m;
+}
+
+// The record as a vehicle CSV a user would hand to `ridefit diagnose` or `fit psd` (time, road
+// elevation, both accelerations), printed to 10 significant digits.
+inline void write_vehicle_record(const std::filesystem::path& csv_file,
+                                 const fitting::PsdMeasurement& m) {
+  std::ofstream out(csv_file);
+  out << "time[s],road[m],body_acc[m/s^2],wheel_acc[m/s^2]\n";
+  out.precision(10);
+  for (std::size_t k = 0; k < m.time_s.size(); ++k) {
+    out << m.time_s[k] << ',' << m.road->at(m.time_s[k]).elevation_m << ','
+        << m.body_acc_m_per_s2[k] << ',' << m.wheel_acc_m_per_s2[k] << '\n';
+  }
 }
 
 }  // namespace ridefit::testing

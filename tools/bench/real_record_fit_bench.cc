@@ -2,11 +2,12 @@
 // licences; read from there, never copied): the target is ≤ 30 s per fit (median).
 // The models and free parameters are tools/validate-real's:
 // - the UTFSM MR damper, 10 mm / 2 Hz: five currents pooled, one command law I^p with the
-//   press's free play (9 free), each test weighed by its own spread;
+//   press's free play and a command-scaled knee (11 free), each test weighed by its own spread;
 // - the dry-friction damper (BRFD), first half: Dahl + free play + direction-dependent friction
-//   (5 free), from the data sheet datasets/lab/friction_damper_datasheet.yaml;
+//   and the mass the load cell carries (6 free), from the data sheet
+//   datasets/lab/friction_damper_datasheet.yaml;
 // - the NEES MR damper random test, first half at every third sample, with its voltage: command
-//   law, lag, exponent and knee (10 free).
+//   law, lag, exponent, knee and the load cell's moving mass (11 free).
 // Each starts from the data sheet and the levels read off the records, as `fit hysteresis` does.
 //   real_record_fit_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 // Without the records the benchmarks report an error and time nothing.
@@ -114,11 +115,15 @@ void BM_RealMrSineFiveCurrents10mm(benchmark::State& state) {
   if (!have(state, file)) return;
   const auto tests = ridefit::fitting::load_hysteresis_tests(file);
   std::vector<std::string> free = kMrFree;
-  free.emplace_back("command_exponent");
-  free.emplace_back("free_play_m");
+  for (const char* name : {"command_exponent", "free_play_m", "damper_knee_velocity_m_per_s",
+                           "damping_above_knee_Ns_per_m"}) {
+    free.emplace_back(name);
+  }
   fit(state, tests,
-      data_sheet("mr_strut_passive.yaml",
-                 {{"top_mount_stiffness_N_per_m", 1e9}, {"free_play_m", 2e-4}}),
+      data_sheet("mr_strut_passive.yaml", {{"top_mount_stiffness_N_per_m", 1e9},
+                                           {"free_play_m", 2e-4},
+                                           {"damper_knee_velocity_m_per_s", 0.04},
+                                           {"damping_above_knee_Ns_per_m", 300.0}}),
       free, ridefit::fitting::RecordWeighting::kRelative);
 }
 BENCHMARK(BM_RealMrSineFiveCurrents10mm)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
@@ -132,7 +137,7 @@ void BM_RealFrictionDamperFirstHalf(benchmark::State& state) {
       data_sheet("friction_damper_datasheet.yaml",
                  {{"free_play_m", 0.004}, {"friction_compression_to_rebound_ratio", 0.85}}),
       {"coulomb_force_N", "dahl_sigma0_N_per_m", "force_offset_N", "free_play_m",
-       "friction_compression_to_rebound_ratio"});
+       "friction_compression_to_rebound_ratio", "moving_mass_kg"});
 }
 BENCHMARK(BM_RealFrictionDamperFirstHalf)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
 
@@ -144,7 +149,7 @@ void BM_RealMrRandomFirstHalf(benchmark::State& state) {
   std::vector<std::string> free = kMrFree;
   free.erase(free.begin() + 1);  // the passive friction: the knee carries the 0 V yield
   for (const char* name : {"command_lag_s", "command_exponent", "damper_knee_velocity_m_per_s",
-                           "damping_above_knee_Ns_per_m"}) {
+                           "damping_above_knee_Ns_per_m", "moving_mass_kg"}) {
     free.emplace_back(name);
   }
   fit(state, {until(whole, half)},

@@ -3,10 +3,13 @@
 #include <ceres/ceres.h>
 #include <fmt/core.h>
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "ridefit/common/errors.h"
@@ -440,17 +443,44 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   coarser.relative_tolerance = coarser_tolerance(coarser.relative_tolerance);
   add_records(at_tolerance, options.solver);
   add_records(at_coarser, coarser);
+  // The scatter under the same robust loss as the cost it is compared with, of the raw residuals.
+  const std::unique_ptr<ceres::LossFunction> floor_loss(
+      make_loss_function(options.loss, options.loss_scale_N));
   auto measure_floor = [&]() -> double {
     if (options.solver.frozen_steps != nullptr) return 0.0;
     std::vector<double> residuals, coarse_residuals;
-    const ceres::Problem::EvaluateOptions all;
+    ceres::Problem::EvaluateOptions all;
+    all.apply_loss_function = false;
     if (!at_tolerance.Evaluate(all, nullptr, &residuals, nullptr, nullptr) ||
         !at_coarser.Evaluate(all, nullptr, &coarse_residuals, nullptr, nullptr)) {
       return 0.0;
     }
-    return integration_cost_floor(residuals, coarse_residuals);
+    return integration_cost_floor(residuals, coarse_residuals, floor_loss.get());
   };
-  StopAtIntegrationResolution stop(measure_floor, initial_residuals.size());
+  // The whole Gauss-Newton step's promise at the iterate, from the exact Jacobian at the fit's
+  // tolerance: the gradient condition of the rejected-step stop.
+  auto gauss_newton_decrease = [&]() -> double {
+    double cost = 0.0;
+    std::vector<double> residuals;
+    ceres::CRSMatrix jacobian;
+    if (!at_tolerance.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr,
+                               &jacobian)) {
+      return std::numeric_limits<double>::infinity();
+    }
+    Eigen::MatrixXd j = Eigen::MatrixXd::Zero(jacobian.num_rows, jacobian.num_cols);
+    for (int row = 0; row < jacobian.num_rows; ++row) {
+      for (int k = jacobian.rows[row]; k < jacobian.rows[row + 1]; ++k) {
+        j(row, jacobian.cols[k]) = jacobian.values[k];
+      }
+    }
+    const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(
+        residuals.data(), static_cast<Eigen::Index>(residuals.size()));
+    const Eigen::VectorXd g = j.transpose() * r;
+    const Eigen::VectorXd step = j.colPivHouseholderQr().solve(-r);
+    const double decrease = -0.5 * g.dot(step);
+    return std::isfinite(decrease) ? decrease : std::numeric_limits<double>::infinity();
+  };
+  StopAtIntegrationResolution stop(measure_floor, initial_residuals.size(), gauss_newton_decrease);
   solver.update_state_every_iteration = true;
   if (options.stop_at_integration_resolution) solver.callbacks.push_back(&stop);
   solver.logging_type = ceres::SILENT;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <ceres/iteration_callback.h>
+#include <ceres/loss_function.h>
 #include <fmt/core.h>
 
 #include <cmath>
@@ -32,7 +33,8 @@ namespace ridefit::fitting {
 //    error, averaged over N independent residuals): the scatter, not the model, decided the
 //    steps (noisy records at their optimum). One such rejection is not enough: partway along a
 //    flat valley the trust region may have shrunk to a step the scatter refuses, and the shorter
-//    step after it is then accepted and the fit goes on.
+//    step after it is then accepted and the fit goes on. Where the fit can say what the whole
+//    Gauss-Newton step promises (the gradient condition), that must be below the scatter too.
 // Far from the optimum the predicted decreases are orders of magnitude above that, so neither
 // ends a fit early; Ceres' own tolerances still apply. Needs
 // Solver::Options::update_state_every_iteration, so the parameter blocks hold the iterate.
@@ -40,22 +42,35 @@ inline double coarser_tolerance(double relative_tolerance) {
   return relative_tolerance * 4.0 < 0.1 ? relative_tolerance * 4.0 : 0.1;
 }
 
-// ½δ²: the cost of residuals at the integration's scatter.
+// ½δ²: the cost of residuals at the integration's scatter, ½Σρ(δᵢ²) under the fit's robust loss
+// ρ (null: none) so that it compares with the cost Ceres reports, which carries the loss: a
+// Cauchy or Huber cost is below the plain one wherever residuals pass the loss's scale.
+// `residuals` and `coarse_residuals` are the raw ones (no loss applied).
 inline double integration_cost_floor(std::span<const double> residuals,
-                                     std::span<const double> coarse_residuals) {
-  double squared = 0.0;
+                                     std::span<const double> coarse_residuals,
+                                     const ceres::LossFunction* loss = nullptr) {
+  double cost = 0.0;
   for (std::size_t i = 0; i < residuals.size() && i < coarse_residuals.size(); ++i) {
     const double d = residuals[i] - coarse_residuals[i];
-    squared += d * d;
+    double rho[3] = {d * d, 1.0, 0.0};
+    if (loss != nullptr) loss->Evaluate(d * d, rho);
+    cost += rho[0];
   }
-  return 0.5 * squared;
+  return 0.5 * cost;
 }
 
 class StopAtIntegrationResolution final : public ceres::IterationCallback {
  public:
   // `measure_floor()`: ½δ² at the parameter blocks' current values (0 when a run fails there).
-  StopAtIntegrationResolution(std::function<double()> measure_floor, std::size_t residual_count)
+  // `gauss_newton_decrease()` (may be empty): the decrease the full Gauss-Newton step promises
+  // from the parameter blocks' current values, ½gᵀ(JᵀJ)⁻¹g (infinity when it cannot be
+  // computed). The rejected-step condition ends a fit only when that promise too is below the
+  // scatter: a trust region shrunk partway along a flat valley promises little for its own short
+  // step while the whole step towards the valley's floor promises more.
+  StopAtIntegrationResolution(std::function<double()> measure_floor, std::size_t residual_count,
+                              std::function<double()> gauss_newton_decrease = {})
       : measure_(std::move(measure_floor)),
+        gauss_newton_(std::move(gauss_newton_decrease)),
         count_(static_cast<double>(residual_count > 0 ? residual_count : 1)) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
@@ -72,8 +87,12 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
         return ceres::SOLVER_CONTINUE;
       }
     }
-    if (!summary.step_is_successful && summary.iteration > 0 && ++refused_in_a_row_ < 2) {
-      return ceres::SOLVER_CONTINUE;
+    if (!summary.step_is_successful && summary.iteration > 0) {
+      if (++refused_in_a_row_ < 2) return ceres::SOLVER_CONTINUE;
+      if (gauss_newton_ && !(gauss_newton_() < scatter_)) {
+        refused_in_a_row_ = 0;
+        return ceres::SOLVER_CONTINUE;
+      }
     }
     reached_ = true;
     return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
@@ -88,7 +107,7 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
     measured_at_ = iterate_;
   }
 
-  bool wants_to_stop(const ceres::IterationSummary& summary) const {
+  bool wants_to_stop(const ceres::IterationSummary& summary) {
     if (!(floor_ > 0.0)) return false;
     const bool accepted = summary.iteration == 0 || summary.step_is_successful;
     if (accepted && summary.cost <= floor_) return true;
@@ -103,13 +122,14 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
     // damping below it), which the fit must be allowed to follow.
     if (summary.step_is_successful) return false;
     const double predicted = std::abs(summary.cost_change / summary.relative_decrease);
-    const double scatter =
-        floor_ + std::sqrt(2.0 * std::abs(summary.cost)) * std::sqrt(2.0 * floor_ / count_);
-    return std::isfinite(predicted) && predicted < scatter;
+    scatter_ = floor_ + std::sqrt(2.0 * std::abs(summary.cost)) * std::sqrt(2.0 * floor_ / count_);
+    return std::isfinite(predicted) && predicted < scatter_;
   }
 
   std::function<double()> measure_;
+  std::function<double()> gauss_newton_;
   double count_;
+  double scatter_ = 0.0;  // the cost's scatter at the last rejected step
   double floor_ = 0.0;
   long iterate_ = 0;          // accepted iterates so far (the start is the first)
   long measured_at_ = 0;      // the iterate floor_ was measured at

@@ -505,6 +505,9 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
     simulate::AccelerationSolverOptions coarser = solver_options(options);
     coarser.relative_tolerance = coarser_tolerance(coarser.relative_tolerance);
     const std::unique_ptr<ceres::CostFunction> at_coarser(new_psd_cost(m, car, setup, coarser));
+    // The scatter under the same robust loss as the cost it is compared with.
+    const std::unique_ptr<ceres::LossFunction> floor_loss(
+        make_loss_function(options.loss, options.loss_scale));
     auto measure_floor = [&]() -> double {
       if (options.frozen_steps != nullptr) return 0.0;
       const auto rows = static_cast<std::size_t>(cost->num_residuals());
@@ -514,7 +517,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
           !at_coarser->Evaluate(at.data(), coarse.data(), nullptr)) {
         return 0.0;
       }
-      return integration_cost_floor(residuals, coarse);
+      return integration_cost_floor(residuals, coarse, floor_loss.get());
     };
     StopAtIntegrationResolution stop(measure_floor,
                                      static_cast<std::size_t>(cost->num_residuals()));

@@ -35,7 +35,7 @@ struct StrutParameterInfo {
 // below its bound: fitting it needs a start). The load cell's chain (gain, delay, cutoff) is
 // rig-only; a cutoff of 0 is off and below its bound likewise.
 // Free play's 0 is off and below its bound likewise.
-inline constexpr std::array<StrutParameterInfo, 24> kStrutParameters{{
+inline constexpr std::array<StrutParameterInfo, 25> kStrutParameters{{
     {&model::quarter_car_rows::dahl_sigma0_N_per_m, 1e3, 1e10, true},
     {&model::quarter_car_rows::coulomb_force_N, 0.0, 1e4, true},
     {&model::quarter_car_rows::dahl_exponent, 0.2, 5.0, true},
@@ -61,6 +61,7 @@ inline constexpr std::array<StrutParameterInfo, 24> kStrutParameters{{
     {&model::quarter_car_rows::top_mount_small_amplitude_stiffness_N_per_m, 1e3, 1e10, true},
     {&model::quarter_car_rows::top_mount_transition_deflection_m, 1e-7, 0.1, true},
     {&model::quarter_car_rows::command_exponent, 0.2, 3.0, true},
+    {&model::strut_rig_rows::moving_mass_kg, 0.0, 1e5, false},
 }};
 
 // The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas
@@ -96,8 +97,8 @@ template <typename T>
 T& strut_parameter(model::StrutTestParameters<T>& p, std::size_t index) {
   const model::ParameterInfo& row = *kStrutParameters[index].row;
   if (const auto i = model::strut_row(row)) return model::strut_field(p.strut(), *i);
-  T* const rig[] = {&p.gas_force_N, &p.gas_stiffness_N_per_m, &p.force_offset_N,
-                    &p.force_gain,  &p.force_delay_s,         &p.force_sensor_cutoff_Hz};
+  T* const rig[] = {&p.gas_force_N,   &p.gas_stiffness_N_per_m,  &p.force_offset_N, &p.force_gain,
+                    &p.force_delay_s, &p.force_sensor_cutoff_Hz, &p.moving_mass_kg};
   static_assert(std::size(rig) == model::kStrutRigParameters.size());
   return *rig[&row - model::kStrutRigParameters.data()];
 }

@@ -267,7 +267,7 @@ HysteresisFitResult fit_hysteresis_from_starts(
   });
   // The best start fitted on to convergence; when it ends on a bound (a collapse, or a mechanism
   // traded for another), the next ones too, before the collapse is reported: the fit kept is the
-  // lowest cost off the bounds, else the lowest cost.
+  // lowest cost, off the bounds where two costs are about the same.
   std::optional<HysteresisFitResult> kept;
   for (auto& [first, label] : tried) {
     HysteresisFitResult fit = std::move(first);
@@ -285,9 +285,15 @@ HysteresisFitResult fit_hysteresis_from_starts(
       }
       fit.iterations += first_iterations;
     }
-    const bool better = !kept || (kept->on_bounds.empty() == fit.on_bounds.empty()
-                                      ? fit.final_cost < kept->final_cost
-                                      : fit.on_bounds.empty());
+    // Off the bounds wins only among fits about as good (within 2 % in cost): a parameter on its
+    // bound that the data do not need (a free play of zero) is no collapse, and a start that
+    // ended 25 times worse off the bounds (the UTFSM 2 mm file: 74 % against 12 % NRMSE) is no
+    // better fit.
+    const auto about_as_good = [](double a, double b) { return a <= 1.02 * b && b <= 1.02 * a; };
+    const bool better = !kept || (kept->on_bounds.empty() != fit.on_bounds.empty() &&
+                                          about_as_good(fit.final_cost, kept->final_cost)
+                                      ? fit.on_bounds.empty()
+                                      : fit.final_cost < kept->final_cost);
     if (better) {
       kept = std::move(fit);
       if (chosen != nullptr) *chosen = label;

@@ -19,6 +19,9 @@ struct StrutTestParameters : StrutParameters<T> {
   T force_delay_s{0.0};
   T force_sensor_cutoff_Hz{0.0};
   int force_sensor_order = 1;
+  // The mass between the load cell and the damper: the cell reads m·ẍ beside the strut's force
+  // (a rig's "inertia compensation" subtracts it; a record that was not compensated carries it).
+  T moving_mass_kg{0.0};
 
   // The strut's damper path on the rig, with no gas spring, no offset and an ideal load cell
   // (rig-only, zero until fitted): a damper from a car runs on the rig as it is.
@@ -40,6 +43,7 @@ struct StrutTestParameters : StrutParameters<T> {
     p.force_delay_s = U(force_delay_s);
     p.force_sensor_cutoff_Hz = U(force_sensor_cutoff_Hz);
     p.force_sensor_order = force_sensor_order;
+    p.moving_mass_kg = U(moving_mass_kg);
     return p;
   }
 };

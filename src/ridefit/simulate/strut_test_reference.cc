@@ -11,6 +11,15 @@
 namespace ridefit::simulate {
 namespace {
 
+// The inertia force of the mass the load cell carries, m·ẍ, from a central second difference of
+// the exact displacement (h = 0.1 ms: truncation and rounding both far below a newton).
+double inertia_force_N(const model::StrutTestParameters<double>& p, const RigDisplacement& x,
+                       double t_s) {
+  if (p.moving_mass_kg == 0.0) return 0.0;
+  constexpr double h = 1e-4;
+  return p.moving_mass_kg * (x.at(t_s + h) - 2.0 * x.at(t_s) + x.at(t_s - h)) / (h * h);
+}
+
 // The strut with its load cell's low-pass as extra states s_1 (and s_2 for order 2):
 // s_1' = (F − s_1)/τ_s, s_2' = (s_1 − s_2)/τ_s with F the rig force without the offset.
 class SensedStrutTest : public OdeSystem {
@@ -28,7 +37,7 @@ class SensedStrutTest : public OdeSystem {
     if (!strut_.derivatives(t_s, y, ydot)) return false;
     const double force =
         model::StrutTest::force_N(y, x_.at(t_s), x_.rate_at(t_s), strut_.command_at(t_s), p_) -
-        p_.force_offset_N;
+        p_.force_offset_N + inertia_force_N(p_, x_, t_s);
     ydot[n_] = (force - y[n_]) / tau_s_;
     if (stages_ == 2) ydot[n_ + 1] = (y[n_] - y[n_ + 1]) / tau_s_;
     return true;
@@ -101,7 +110,7 @@ std::vector<double> reference_strut_test_force(std::span<const double> time_s,
   if (strut.size() == 3) y0.push_back(command(t0));
   const double rest_force = model::StrutTest::force_N(y0.data(), displacement_m(t0), x.rate_at(t0),
                                                       command ? command(t0) : 0.0, parameters) -
-                            parameters.force_offset_N;
+                            parameters.force_offset_N + inertia_force_N(parameters, x, t0);
   if (filtered) {
     for (int s = 0; s < (parameters.force_sensor_order == 2 ? 2 : 1); ++s) {
       y0.push_back(rest_force);
@@ -119,7 +128,7 @@ std::vector<double> reference_strut_test_force(std::span<const double> time_s,
     } else {
       physical = model::StrutTest::force_N(y, displacement_m(times[i]), x.rate_at(times[i]),
                                            command ? command(times[i]) : 0.0, parameters) -
-                 parameters.force_offset_N;
+                 parameters.force_offset_N + inertia_force_N(parameters, x, times[i]);
     }
     force.push_back(parameters.force_gain * physical + parameters.force_offset_N);
   }

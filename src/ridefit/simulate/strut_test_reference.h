@@ -14,10 +14,11 @@ namespace ridefit::simulate {
 // fit are made this way: by another integrator than the adaptive ESDIRK that `fit` and
 // `diagnose` run, and without sampling the displacement, so a fit measures the model and not its
 // own discretisation. A controlled damper reads `command` (empty: a command of 0), also known at
-// every instant. The load cell's chain (gain, delay, low-pass) is applied by its own closed
-// forms here, not by apply_force_sensor: the delay by evaluating the force at t − δ from a dense
-// solution, the low-pass by integrating the filter's states alongside the strut's. RunError when
-// CVODE fails.
+// every instant. The inertia of the mass the load cell carries is m times a central second
+// difference of the exact displacement. The load cell's chain (gain, delay, low-pass) is applied
+// by its own closed forms here, not by apply_force_sensor: the delay by evaluating the force at
+// t − δ from a dense solution, the low-pass by integrating the filter's states alongside the
+// strut's. RunError when CVODE fails.
 std::vector<double> reference_strut_test_force(std::span<const double> time_s,
                                                const std::function<double(double)>& displacement_m,
                                                const model::StrutTestParameters<double>& parameters,

@@ -68,12 +68,17 @@ TEST_P(HiddenEffectIsNamed, RankedFirstParametersRecoveredGapShrinks) {
   EXPECT_EQ(first.id, h.id) << r.verdict;
   ASSERT_EQ(r.named.size(), 1u) << r.verdict;
   EXPECT_EQ(r.named[0], h.id);
-  // Each of the effect's parameters within 10 % of the truth or within 2 standard errors.
+  // Each of the effect's parameters within 10 % of the truth or within 2 standard errors, never
+  // more than 25 % (measured: within 2.1 %, the knee 19 % with an SE of 21 %). A parameter the
+  // records do not determine must say so by its standard error (over half its truth: the
+  // stiffening's transition deflection on a class A road, 9.5 mm ± 1.9 m for 0.5 mm).
   for (const auto& p : r.final_parameters) {
     const double truth = parameter_value(h.truth, p.name);
     if (parameter_value(h.baseline, p.name) == truth) continue;  // a baseline parameter
+    if (p.standard_error && *p.standard_error > 0.5 * std::abs(truth)) continue;
     const double tolerance =
-        std::max(0.1 * std::abs(truth), p.standard_error ? 2.0 * *p.standard_error : 0.0);
+        std::min(std::max(0.1 * std::abs(truth), p.standard_error ? 2.0 * *p.standard_error : 0.0),
+                 0.25 * std::abs(truth));
     EXPECT_NEAR(p.value, truth, tolerance)
         << h.id << " " << p.name << " SE " << (p.standard_error ? *p.standard_error : -1.0);
   }
