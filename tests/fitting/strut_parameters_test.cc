@@ -23,6 +23,9 @@ TEST(StrutParameters, EveryFitBoxLiesInsideItsRowsRange) {
     EXPECT_TRUE(p.row->contains(p.lower) || (p.lower == 0.0 && p.row->lower == 0.0)) << p.lower;
     EXPECT_EQ(p.in_model_file, model::quarter_car_parameter_index(p.name()).has_value());
   }
+  // A gas spring's rate is not negative (force tension positive): a fit must not trade one
+  // against the load cell's offset.
+  EXPECT_EQ(kStrutParameters[strut_parameter_index("gas_stiffness_N_per_m")].lower, 0.0);
 }
 
 TEST(StrutParameters, ValuesByNameAndTheModelFilesShareOfThem) {
