@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -40,6 +41,8 @@ struct DiagnoseArguments {
   std::vector<std::string> excitations;
   std::vector<std::string> effects;  // empty: all
   std::vector<std::string> free;
+  // The baseline's tolerances; none: dx::datasheet_tolerances().
+  std::optional<std::map<std::string, double>> tolerances;
   std::pair<double, double> band_Hz;
   double segment_s;
   double screening_rtol;
@@ -120,6 +123,7 @@ nlohmann::json diagnose_spectra(const ModelHandle& model, const DiagnoseArgument
     }
   }
   options.baseline_free = a.free;
+  options.baseline_tolerances = a.tolerances ? *a.tolerances : dx::datasheet_tolerances();
   options.fit.band_low_Hz = a.band_Hz.first;
   options.fit.band_high_Hz = a.band_Hz.second;
   options.fit.segment_s = a.segment_s;
@@ -159,14 +163,16 @@ void bind_diagnose(py::module_& m) {
       "_diagnose",
       [](const ModelHandle& model, std::vector<std::string> records,
          std::vector<std::string> excitations, std::vector<std::string> effects,
-         std::vector<std::string> free, std::pair<double, double> band_Hz, double segment_s,
-         double screening_rtol, double rtol, std::optional<double> body_noise_psd,
-         std::optional<double> wheel_noise_psd, unsigned threads, const py::object& progress) {
+         std::vector<std::string> free, std::optional<std::map<std::string, double>> tolerances,
+         std::pair<double, double> band_Hz, double segment_s, double screening_rtol, double rtol,
+         std::optional<double> body_noise_psd, std::optional<double> wheel_noise_psd,
+         unsigned threads, const py::object& progress) {
         check_effects(effects);
         const DiagnoseArguments a{std::move(records),
                                   std::move(excitations),
                                   std::move(effects),
                                   std::move(free),
+                                  std::move(tolerances),
                                   band_Hz,
                                   segment_s,
                                   screening_rtol,

@@ -22,16 +22,16 @@ using testing::dataset;
 using testing::run_cli;
 using testing::text_of;
 
-const char* kFree = "dahl_sigma0_N_per_m,coulomb_force_N,force_offset_N";
+const char* kFree = "dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent,force_offset_N";
 
 // Fits of the shipped shim rig tests (3 triangle cycles each, a fraction of a second a fit).
 std::string shim_jobs(const std::string& jobs) {
   return "defaults:\n"
          "  command: fit hysteresis\n"
          "  model: " +
-         dataset("vehicles/passat_b8_front.yaml") +
+         dataset("lab/passat_strut_datasheet.yaml") +
          "\n"
-         "  options: {free: [dahl_sigma0_N_per_m, coulomb_force_N, force_offset_N], "
+         "  options: {free: [dahl_sigma0_N_per_m, coulomb_force_N, dahl_exponent, force_offset_N], "
          "interpolation: linear}\n"
          "jobs:\n" +
          jobs;
@@ -73,8 +73,9 @@ TEST(BatchCli, FailedRecordIsReportedAndTheOthersComplete) {
     EXPECT_EQ(rows[i + 1][2], "fit hysteresis");
     EXPECT_EQ(rows[i + 1][4], i < 3 ? "ok" : "failed");
   }
-  EXPECT_NE(rows[1][5].find("coulomb_force_N=40.0"), std::string::npos) << rows[1][5];
-  EXPECT_NE(rows[3][5].find("coulomb_force_N=60.0"), std::string::npos) << rows[3][5];
+  // Truths 40 and 60 N, less the held data-sheet damping's 0.31 N (docs/fitting.md).
+  EXPECT_NE(rows[1][5].find("coulomb_force_N=39.69"), std::string::npos) << rows[1][5];
+  EXPECT_NE(rows[3][5].find("coulomb_force_N=59.70"), std::string::npos) << rows[3][5];
 
   const auto summary = json_of(out / "summary.json");
   EXPECT_EQ(summary["ok"], 3);
@@ -86,7 +87,7 @@ TEST(BatchCli, FailedRecordIsReportedAndTheOthersComplete) {
       << broken["message"];
   const auto& shim = summary["jobs"][0];
   EXPECT_LT(shim["nrmse_percent"].get<double>(), 3.0);
-  ASSERT_EQ(shim["parameters"].size(), 3u);
+  ASSERT_EQ(shim["parameters"].size(), 4u);  // σ0, Fc, d, offset
   EXPECT_EQ(shim["parameters"][1]["name"], "coulomb_force_N");
   EXPECT_GT(shim["parameters"][1]["standard_error"].get<double>(), 0.0);
   EXPECT_GE(shim["wall_time_s"].get<double>(), 0.0);
@@ -130,9 +131,9 @@ TEST(BatchCli, JobGivesTheSingleCommandsNumbersAndFiles) {
   EXPECT_NE(run.output.find("1 ok, 0 failed"), std::string::npos) << run.output;
 
   const auto single_model = dir.path() / "single.yaml";
-  const auto single =
-      run_cli("fit hysteresis " + record + " --model " + dataset("vehicles/passat_b8_front.yaml") +
-              " --free " + kFree + " --interpolation linear --json -o " + single_model.string());
+  const auto single = run_cli("fit hysteresis " + record + " --model " +
+                              dataset("lab/passat_strut_datasheet.yaml") + " --free " + kFree +
+                              " --interpolation linear --json -o " + single_model.string());
   ASSERT_EQ(single.exit_code, 0) << single.output;
   auto expected = nlohmann::json::parse(single.output);
   expected.erase("written");  // the single command's paths
@@ -192,7 +193,8 @@ TEST(BatchCli, ShippedJobFileRuns) {
   EXPECT_NE(run.output.find("5 ok, 0 failed"), std::string::npos) << run.output;
   const auto summary = json_of(out / "summary.json");
   EXPECT_EQ(summary["jobs"][0]["name"], "triangle");
-  EXPECT_NEAR(summary["jobs"][0]["parameters"][1]["value"].get<double>(), 60.0, 0.05);
+  // Truth 60 N, less the held data-sheet damping's 0.31 N (docs/fitting.md).
+  EXPECT_NEAR(summary["jobs"][0]["parameters"][1]["value"].get<double>(), 59.69, 0.05);
   EXPECT_EQ(summary["jobs"][4]["command"], "diagnose");
 }
 

@@ -180,25 +180,34 @@ TEST(DemoSteps, Seed001SpeedStudy) {
   expect_answers(run, "seed001_speed.yaml", "sweep");
 }
 
-// == Strut friction from the rig tests of datasets/lab, and the fitted strut on the road.
+// == Strut friction from the rig tests of datasets/lab, every fit from the data sheet's values
+// (off the truth), and the strut fitted on the dynamic test on the road.
 TEST(DemoSteps, StrutFitsFromTheLabRigTests) {
   testing::TempDir dir("ridefit_demo_steps");
+  const std::string datasheet = dataset("lab/passat_strut_datasheet.yaml");
   const std::string fitted = (dir.path() / "passat_fitted.yaml").string();
   expect_answers(
-      run_json("fit hysteresis " + dataset("lab/triangle_3mm_1mmps.csv") + " --model " + kPassat +
+      run_json("fit hysteresis " + dataset("lab/triangle_3mm_1mmps.csv") + " --model " + datasheet +
                    " --free dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent,"
                    "force_offset_N --interpolation linear -o " +
-                   fitted,
+                   (dir.path() / "passat_triangle.yaml").string(),
                dir.path()),
       "lab_fits.yaml", "triangle");
   expect_answers(
       run_json("fit hysteresis " + dataset("lab/shim_0mm.csv") + " " + dataset("lab/shim_2mm.csv") +
-                   " " + dataset("lab/shim_4mm.csv") + " --model " + kPassat +
-                   " --free dahl_sigma0_N_per_m,coulomb_force_N,force_offset_N "
+                   " " + dataset("lab/shim_4mm.csv") + " --model " + datasheet +
+                   " --free dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent,force_offset_N "
                    "--per-file coulomb_force_N --compression 0,2,4 "
                    "--interpolation linear",
                dir.path()),
       "lab_fits.yaml", "shims");
+  expect_answers(
+      run_json("fit hysteresis " + dataset("lab/dynamic_60s.csv") + " --model " + datasheet +
+                   " --free dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent,"
+                   "top_mount_stiffness_N_per_m,damping_Ns_per_m,force_offset_N -o " +
+                   fitted,
+               dir.path()),
+      "lab_fits.yaml", "dynamic");
   expect_answers(run_json("simulate " + fitted + " " + kClassA, dir.path()), "lab_fits.yaml",
                  "fitted_strut_on_class_a");
 }

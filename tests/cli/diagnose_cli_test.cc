@@ -155,6 +155,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadDiagnosis{"RigTooShortToSplit", "{short_rig}", "less than one cycle"},
         BadDiagnosis{"RigWithoutForce", "{forceless}", "no column 'force'"},
         BadDiagnosis{"RigUnknownEffect", "{rig} --effects gas_spring", "unknown effect"},
+        BadDiagnosis{"ToleranceOfAnUnknownParameter", "{record} --tolerances spring_rate=0.1",
+                     "--tolerances: 'spring_rate=0.1' is not KEY=SHARE with a quarter-car key"},
+        BadDiagnosis{"ToleranceNotAShare", "{record} --tolerances sprung_mass_kg=-0.03",
+                     "--tolerances: sprung_mass_kg is '-0.03'; expected a share of its value in "
+                     "(0, 10]"},
+        BadDiagnosis{"ToleranceWithoutValue", "{record} --tolerances datasheet,sprung_mass_kg",
+                     "'sprung_mass_kg' is not KEY=SHARE"},
+        BadDiagnosis{"RigWithTolerances", "{rig} --tolerances datasheet",
+                     "the data sheet's priors apply to vehicle spectra"},
         BadDiagnosis{"ExcitationCountMismatch",
                      "{record} {record} --excitation {long_road} --excitation {long_road} "
                      "--excitation {long_road}",

@@ -140,6 +140,28 @@ TEST_F(FitCli, AFitThatDoesNotConvergeExits1WithoutAModel) {
   EXPECT_FALSE(fs::exists(fitted));
 }
 
+// A held top mount 20 % soft on the slow triangle: the pre-sliding rise asks for more stiffness
+// than σ0 in series with it can give, σ0 and d run off until the model cannot be run with
+// derivatives. The stop names the values reached, not Ceres' "Residual and Jacobian evaluation
+// failed" alone.
+TEST_F(FitCli, AFitThatRunsWhereTheModelCannotBeSolvedNamesTheValuesItReached) {
+  const fs::path fitted = dir_ / "fitted.yaml";
+  const auto run = run_cli("fit hysteresis " + testing::dataset("lab/triangle_3mm_1mmps.csv") +
+                           " --model " + testing::dataset("lab/passat_strut_datasheet.yaml") +
+                           " --start top_mount_stiffness_N_per_m=390000 --free "
+                           "dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent,force_offset_N "
+                           "--interpolation linear -o " +
+                           fitted.string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_NE(run.output.find("could not be run with derivatives near dahl_sigma0_N_per_m = "),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("dahl_exponent = 5 (its upper bound)"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("check the values the fit holds"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(fitted));
+}
+
 }  // namespace
 }  // namespace ridefit
 

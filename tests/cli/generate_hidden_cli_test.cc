@@ -10,6 +10,7 @@
 
 #include "ridefit/fitting/hysteresis_record.h"
 #include "ridefit/fitting/psd_fit.h"
+#include "ridefit/io/quarter_car_file.h"
 #include "support/cli_runner.h"
 #include "support/passat.h"
 #include "support/temp_dir.h"
@@ -54,6 +55,41 @@ TEST(GenerateHiddenCli, WritesRecordsAndTruthDeterministically) {
   ASSERT_EQ(run_cli("generate-hidden " + file + " -o " + c + " --seed 5").exit_code, 0);
   EXPECT_NE(testing::text_of((std::filesystem::path(a) / "lift.csv").string()),
             testing::text_of((std::filesystem::path(c) / "lift.csv").string()));
+}
+
+// `baseline:` writes NAME_baseline.yaml: the model with values off as a data sheet's are, each
+// within its stated width (synthetic/datasheet_values.h) of the model's, the same for the same
+// seed, and the records as without it (the baseline changes no record).
+TEST(GenerateHiddenCli, WritesADatasheetBaselineWithinItsTolerances) {
+  testing::TempDir dir("ridefit_hidden_cli");
+  const std::string model = dataset("hidden/baselines/passat_slip.yaml");
+  const auto plain = dir.write("plain.yaml", spec());
+  const auto sheet =
+      dir.write("sheet.yaml", spec("    baseline: {model: " + model + ", datasheet_seed: 9}\n"));
+  const std::filesystem::path a = dir.path() / "a", b = dir.path() / "b";
+  ASSERT_EQ(run_cli("generate-hidden " + plain + " -o " + a.string()).exit_code, 0);
+  ASSERT_EQ(run_cli("generate-hidden " + sheet + " -o " + b.string()).exit_code, 0);
+  EXPECT_FALSE(std::filesystem::exists(a / "lift_baseline.yaml"));
+  EXPECT_EQ(testing::text_of(a / "lift.csv"), testing::text_of(b / "lift.csv"));
+  const auto base = io::load_quarter_car(model).parameters;
+  const auto drawn = io::load_quarter_car(b / "lift_baseline.yaml").parameters;
+  const std::pair<double, double> pairs[] = {
+      {drawn.sprung_mass_kg / base.sprung_mass_kg, 0.03},
+      {drawn.unsprung_mass_kg / base.unsprung_mass_kg, 0.03},
+      {drawn.tyre_stiffness_N_per_m / base.tyre_stiffness_N_per_m, 0.08},
+      {drawn.spring_stiffness_N_per_m / base.spring_stiffness_N_per_m, 0.08},
+      {drawn.damping_Ns_per_m / base.damping_Ns_per_m, 0.12},
+      {drawn.top_mount_stiffness_N_per_m / base.top_mount_stiffness_N_per_m, 0.15}};
+  int moved = 0;
+  for (const auto& [ratio, width] : pairs) {
+    EXPECT_LE(std::abs(ratio - 1.0), width) << ratio;
+    moved += std::abs(ratio - 1.0) > 1e-6 ? 1 : 0;
+  }
+  EXPECT_EQ(moved, 6);
+  const double sigma0 = drawn.dahl_sigma0_N_per_m / base.dahl_sigma0_N_per_m;
+  EXPECT_GE(sigma0, 0.5);
+  EXPECT_LE(sigma0, 2.0);
+  EXPECT_NE(testing::text_of(b / "lift_baseline.yaml").find("datasheet_seed 9"), std::string::npos);
 }
 
 std::string rig_spec(
@@ -144,6 +180,22 @@ INSTANTIATE_TEST_SUITE_P(
         BadSpec{"RigUnknownStrutKey",
                 rig_spec("{amplitudes_mm: [3], frequencies_Hz: [1]}", "{gas_rate: 1}"),
                 "'gas_rate' is not a strut-test parameter"},
+        BadSpec{"BaselineWithSeedAndErrors",
+                spec("    baseline: {model: " + dataset("hidden/baselines/passat_slip.yaml") +
+                     ", datasheet_seed: 3, errors: {sprung_mass_kg: 0.02}}\n"),
+                "give either datasheet_seed"},
+        BadSpec{"BaselineErrorBelowMinusOne",
+                spec("    baseline: {model: " + dataset("hidden/baselines/passat_slip.yaml") +
+                     ", errors: {sprung_mass_kg: -1.5}}\n"),
+                "expected a share in (-1, 10]"},
+        BadSpec{"BaselineErrorOnAnUnknownKey",
+                spec("    baseline: {model: " + dataset("hidden/baselines/passat_slip.yaml") +
+                     ", errors: {sprung_mass: 0.02}}\n"),
+                "'sprung_mass' is not a quarter-car parameter"},
+        BadSpec{"RigWithABaseline",
+                rig_spec() + "    baseline: {model: " +
+                    dataset("hidden/baselines/passat_slip.yaml") + ", datasheet_seed: 3}\n",
+                "data-sheet baselines are written for vehicle datasets only"},
         BadSpec{"RigWithASensor", rig_spec() + "    sensor: {noise: 0.01}\n",
                 "takes noise_N, not a sensor"}),
     [](const ::testing::TestParamInfo<BadSpec>& param_info) { return param_info.param.name; });

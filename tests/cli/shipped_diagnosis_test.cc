@@ -1,8 +1,10 @@
 // `ridefit diagnose` on every shipped hidden-effect dataset (datasets/hidden/, made by CVODE,
-// diagnosed on ridefit's ESDIRK): it names exactly what each truth hid, says "no missing effect"
-// on the baseline's own records and "unexplained" for a sensor mount outside its library; on seed
-// 000's case it fits the top mount's transition deflection within 10 % (issue 14), the body mass
-// within 2 % and closes the gap below 0.5 dB.
+// diagnosed on ridefit's ESDIRK), each vehicle dataset from its data-sheet baseline
+// (NAME_baseline.yaml: the truth's base with values off as a sheet's are, drawn by
+// generate-hidden) with --tolerances datasheet: it names exactly what each truth hid, says "no
+// missing effect" on the baseline's own records and "unexplained" for a sensor mount outside its
+// library; on seed 000's case it fits the top mount's transition deflection within 10 % (issue 14),
+// the body mass within 2 % and closes the gap below 0.5 dB.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,10 +37,13 @@ class ShippedHiddenDataset : public ::testing::TestWithParam<ShippedCase> {};
 TEST_P(ShippedHiddenDataset, NamesExactlyWhatItsTruthHid) {
   const ShippedCase& c = GetParam();
   testing::TempDir dir("ridefit_shipped_diagnosis");
+  // A data-sheet baseline is diagnosed with the sheet's tolerances (its values refitted under
+  // priors at the sheet's).
+  const bool sheet = c.baseline.ends_with("_baseline.yaml");
   const auto run =
       run_cli("diagnose " + dataset(c.baseline) + " " + dataset("hidden/" + c.name + ".csv") + " " +
-              dataset("hidden/" + c.name + "_2.csv") + " --json -q --threads 1 -o " +
-              (dir.path() / "diagnosis").string());
+              dataset("hidden/" + c.name + "_2.csv") + (sheet ? " --tolerances datasheet" : "") +
+              " --json -q --threads 1 -o " + (dir.path() / "diagnosis").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const auto start = run.output.find('{');
   ASSERT_NE(start, std::string::npos) << run.output;
@@ -78,28 +83,33 @@ TEST_P(ShippedHiddenDataset, NamesExactlyWhatItsTruthHid) {
 INSTANTIATE_TEST_SUITE_P(
     Datasets, ShippedHiddenDataset,
     ::testing::Values(
+        // Seed 000's own case from the seed's stick model (its values held): from its data-sheet
+        // baseline the tolerances let the baseline's top mount take up the stiffer small-amplitude
+        // mount (+30 %, 2 standard deviations) and nothing is named, since one smooth-road record
+        // shows one amplitude; telling the two apart needs the probabilities and the next test
+        // of issues 35 (item 3) and 38. Without tolerances the stiffening is named from the sheet
+        // too, with a disagreement the sheet's masses leave.
         ShippedCase{"seed_top_mount_stiffening",
                     "hidden/baselines/passat_stick.yaml",
                     {"top_mount_amplitude_stiffening"}},
         ShippedCase{"top_mount_stiffening_stick_slip",
-                    "vehicles/passat_b8_front.yaml",
+                    "hidden/top_mount_stiffening_stick_slip_baseline.yaml",
                     {"top_mount_amplitude_stiffening"}},
-        ShippedCase{
-            "tyre_damping", "hidden/baselines/passat_slip_no_tyre_damping.yaml", {"tyre_damping"}},
-        ShippedCase{"damper_friction", "hidden/baselines/passat_slip.yaml", {"damper_friction"}},
+        ShippedCase{"tyre_damping", "hidden/tyre_damping_baseline.yaml", {"tyre_damping"}},
+        ShippedCase{"damper_friction", "hidden/damper_friction_baseline.yaml", {"damper_friction"}},
         ShippedCase{"top_mount_compliance",
-                    "hidden/baselines/passat_rigid_top_mount.yaml",
+                    "hidden/top_mount_compliance_baseline.yaml",
                     {"top_mount_compliance"}},
-        ShippedCase{"damper_asymmetry", "hidden/baselines/passat_slip.yaml", {"damper_asymmetry"}},
         ShippedCase{
-            "damper_digressive", "hidden/baselines/passat_slip.yaml", {"damper_digressive"}},
-        ShippedCase{"bump_stop", "hidden/baselines/passat_slip.yaml", {"bump_stop"}},
-        ShippedCase{"tyre_lift_off", "hidden/baselines/passat_slip.yaml", {"tyre_lift_off"}},
-        ShippedCase{"two_effects",
-                    "hidden/baselines/passat_slip_no_tyre_damping.yaml",
-                    {"bump_stop", "tyre_damping"}},
-        ShippedCase{"baseline_only", "hidden/baselines/passat_slip.yaml", {}},
-        ShippedCase{"second_body_mode", "hidden/baselines/passat_slip.yaml", {}, true},
+            "damper_asymmetry", "hidden/damper_asymmetry_baseline.yaml", {"damper_asymmetry"}},
+        ShippedCase{
+            "damper_digressive", "hidden/damper_digressive_baseline.yaml", {"damper_digressive"}},
+        ShippedCase{"bump_stop", "hidden/bump_stop_baseline.yaml", {"bump_stop"}},
+        ShippedCase{"tyre_lift_off", "hidden/tyre_lift_off_baseline.yaml", {"tyre_lift_off"}},
+        ShippedCase{
+            "two_effects", "hidden/two_effects_baseline.yaml", {"bump_stop", "tyre_damping"}},
+        ShippedCase{"baseline_only", "hidden/baseline_only_baseline.yaml", {}},
+        ShippedCase{"second_body_mode", "hidden/second_body_mode_baseline.yaml", {}, true},
         ShippedCase{"rig_gas_force", "vehicles/passat_b8_front.yaml", {"gas_force"}},
         ShippedCase{
             "rig_stribeck", "vehicles/passat_b8_front.yaml", {"friction_velocity_dependence"}},

@@ -122,16 +122,16 @@ TEST(ControlledStrut, TangentsMatchCentralDifferencesOnFrozenSteps) {
 }
 
 // Build item 1's test: a switching command, every parameter of the strut and of the controlled
-// law free, started 20–40 % off: all back within 2 %.
+// law free, started 30–40 % off (σ0 by a factor 2.2): all back within 2 %.
 TEST(ControlledStrut, FitRecoversEveryParameterWithinTwoPercent) {
   const auto truth = mr_strut();
   const auto u = switching_command(11, 8.0, 2.0);
   const auto r = testing::cvode_controlled_record(truth, random_rig_motion(12), u, 8.0, 1000.0);
   auto start = truth;
-  start.dahl_sigma0_N_per_m *= 0.7;
+  start.dahl_sigma0_N_per_m *= 0.45;
   start.coulomb_force_N *= 1.3;
-  start.top_mount_stiffness_N_per_m *= 1.25;
-  start.damping_Ns_per_m *= 0.75;
+  start.top_mount_stiffness_N_per_m *= 1.35;
+  start.damping_Ns_per_m *= 0.65;
   start.damping_per_command_Ns_per_m *= 1.3;
   start.coulomb_force_per_command_N *= 0.7;
   start.command_lag_s *= 1.4;

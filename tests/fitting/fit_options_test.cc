@@ -58,7 +58,8 @@ TEST(HysteresisFitOptions, ValidateNamesWhatIsWrong) {
 TEST(PsdFitOptions, ValidateNamesWhatIsWrong) {
   PsdFitOptions o;
   EXPECT_NO_THROW(o.validate(false));  // a comparison frees nothing
-  EXPECT_TRUE(throws_input_error([&] { o.validate(); }, "name 1 to 6 parameters"));
+  EXPECT_TRUE(
+      throws_input_error([&] { o.validate(); }, "name 1 to 12 parameters to fit (0 named)"));
   o.free = {"top_mount_stiffness_N_per_m"};
   EXPECT_NO_THROW(o.validate());
   o.free.push_back("top_mount_stiffnes_N_per_m");

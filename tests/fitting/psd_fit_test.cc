@@ -68,8 +68,8 @@ void expect_recovered(double truth, double start) {
   EXPECT_NEAR(fit.values[0], truth, 0.03 * truth) << "start " << start;
 }
 
-TEST(PsdFit, RecoversA488NPerMmTopMount) { expect_recovered(488000.0, 600000.0); }
-TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 560000.0); }
+TEST(PsdFit, RecoversA488NPerMmTopMount) { expect_recovered(488000.0, 700000.0); }
+TEST(PsdFit, RecoversA707NPerMmTopMount) { expect_recovered(707000.0, 480000.0); }
 
 // The log-PSD residuals' Jacobian (tangents through the ESDIRK steps and the FFT) against
 // central differences of the same residuals on the same steps (frozen: the adaptive run's step
@@ -213,8 +213,8 @@ TEST(PsdFit, FivePercentSensorNoiseMovesTheFitLessThanTwoPercent) {
   const auto started = std::chrono::steady_clock::now();
   const PsdMeasurement clean = measure(488000.0, 200.0);
   auto p = testing::passat_corner().parameters;
-  p.top_mount_stiffness_N_per_m = 600000.0;
-  p.damping_Ns_per_m *= 1.2;
+  p.top_mount_stiffness_N_per_m = 700000.0;  // 43 % and 40 % off the truth
+  p.damping_Ns_per_m *= 1.4;
   const model::QuarterCar car(model::DamperState::kStickSlip, p);
   PsdFitOptions options;
   options.free = {"top_mount_stiffness_N_per_m", "damping_Ns_per_m"};

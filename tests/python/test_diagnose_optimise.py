@@ -58,6 +58,22 @@ def test_diagnose_refuses_what_the_cli_refuses(tmp_path, record, passat):
     assert str(error.value).replace("effects:", "--effects:") == message
 
 
+def test_diagnose_tolerances_as_the_cli(tmp_path, record, slip_baseline):
+    # A tolerance set of the caller's own gives the CLI's numbers for the same KEY=SHARE items;
+    # bad ones are refused before any fit.
+    cli = run_cli("diagnose", slip_baseline, record, "--effects", "tyre_lift_off",
+                  "--tolerances", "sprung_mass_kg=0.05", "--segment", 2, "--threads", 1,
+                  "--json", "-q", "-o", tmp_path / "diagnosis").json()
+    result = ridefit.diagnose(slip_baseline, record, effects=["tyre_lift_off"], segment_s=2,
+                              threads=1, tolerances={"sprung_mass_kg": 0.05})
+    assert_same_numbers(result, cli, rtol=1e-6, skip=RUN_KEYS)
+    assert [v["name"] for v in result["sheet_values"]] == ["sprung_mass_kg"]
+    with pytest.raises(ridefit.InputError, match="tolerances: 'sometimes'"):
+        ridefit.diagnose(slip_baseline, record, tolerances="sometimes")
+    with pytest.raises(ridefit.InputError, match="'spring_rate' is not a quarter-car parameter"):
+        ridefit.diagnose(slip_baseline, record, tolerances={"spring_rate": 0.1})
+
+
 def test_optimise_equals_the_cli(tmp_path):
     study = dataset("studies/seed001_damper_tuning_linear.yaml")
     cli = run_cli("optimise", study, "--json", "-q", "--journal", tmp_path / "j.journal").json()

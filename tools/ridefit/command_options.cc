@@ -12,6 +12,7 @@
 #include <iostream>
 
 #include "ridefit/common/errors.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/simulate/simulation_options.h"
 
 namespace ridefit::cli {
@@ -183,6 +184,30 @@ std::map<std::string, double> parse_overrides(const std::vector<std::string>& en
     overrides[key] = value;
   }
   return overrides;
+}
+
+std::map<std::string, double> parse_value_shares(const std::vector<std::string>& entries,
+                                                 const std::string& flag) {
+  std::map<std::string, double> shares;
+  for (const auto& entry : entries) {
+    const auto equals = entry.find('=');
+    const std::string key = entry.substr(0, equals);
+    if (equals == std::string::npos || !model::quarter_car_parameter_index(key)) {
+      throw InputError(fmt::format(
+          "{}: '{}' is not KEY=SHARE with a quarter-car key (e.g. spring_stiffness_N_per_m=0.08)",
+          flag, entry));
+    }
+    const std::string text = entry.substr(equals + 1);
+    char* end = nullptr;
+    const double share = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !(share > 0.0 && share <= 10.0)) {
+      throw InputError(
+          fmt::format("{}: {} is '{}'; expected a share of its value in (0, 10] (0.08 = ±8 %)",
+                      flag, key, text));
+    }
+    shares[key] = share;
+  }
+  return shares;
 }
 
 io::QuarterCarFile load_quarter_car_with_set(const std::string& model_file,

@@ -75,6 +75,11 @@ std::vector<std::pair<std::string, std::string>> parse_key_values(
 // `--set key=value` overrides of numeric model keys; a malformed entry is an InputError.
 std::map<std::string, double> parse_overrides(const std::vector<std::string>& entries);
 
+// KEY=SHARE entries of `flag` (a data sheet's tolerances: --prior, --tolerances): quarter-car keys
+// with a share of their value in (0, 10]; InputError naming the flag and the entry otherwise.
+std::map<std::string, double> parse_value_shares(const std::vector<std::string>& entries,
+                                                 const std::string& flag);
+
 // io::load_quarter_car with `--set` entries: the library's messages about an override name the
 // flag here. `state_flag` is the command's flag for the topology (e.g. "--damper-state"), or ""
 // when the command sets it itself; --set damper_state (or model) points to it.

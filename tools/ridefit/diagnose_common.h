@@ -25,6 +25,7 @@ struct DiagnoseFlags {
   std::string effects = "all";
   std::string output_dir = "diagnosis";
   std::vector<std::string> free;
+  std::vector<std::string> tolerances;  // "datasheet" and/or key=share (vehicle spectra)
   std::vector<double> band_Hz = {0.5, 30.0};
   double segment_s = 4.0;
   double screening_rtol = 1e-3;

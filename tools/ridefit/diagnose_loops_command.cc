@@ -31,6 +31,11 @@ DiagnosisOutput diagnose_loops(const DiagnoseFlags& flags, bool figure,
         "--excitation: strut rig records carry their own excitation (the displacement column); "
         "give none");
   }
+  if (!flags.tolerances.empty()) {
+    throw InputError(
+        "--tolerances: the data sheet's priors apply to vehicle spectra; on rig records free "
+        "the strut's values with --free");
+  }
   dx::LoopDiagnosisOptions options;
   options.effects = effect_ids(flags.effects);
   for (const auto& name : flags.free) {

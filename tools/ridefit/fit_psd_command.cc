@@ -22,6 +22,7 @@
 #include "ridefit/io/model_values_file.h"
 #include "ridefit/io/output_paths.h"
 #include "ridefit/io/quarter_car_file.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::cli {
 namespace {
@@ -31,6 +32,7 @@ struct FitPsdFlags {
   std::string excitation_file;
   std::string model_file;
   std::vector<std::string> free;
+  std::vector<std::string> priors;  // KEY=SHARE: a Gaussian prior at the model file's value
   std::vector<double> band_Hz = {0.5, 30.0};
   double segment_s = 10.0;
   int starts = 1;
@@ -89,6 +91,11 @@ PsdFitRun fit_measurement(const FitPsdFlags& flags) {
   options.relative_tolerance = flags.relative_tolerance;
   options.body_noise_psd = noise_psd_of(flags.body_noise_psd);
   options.wheel_noise_psd = noise_psd_of(flags.wheel_noise_psd);
+  for (const auto& [name, share] : parse_value_shares(flags.priors, "--prior")) {
+    const double mean = model::quarter_car_parameter(model_file.parameters,
+                                                     *model::quarter_car_parameter_index(name));
+    options.priors[name] = {mean, share * std::abs(mean)};
+  }
   PsdFitRun run{fitting::fit_psd(measurement, model_file.make_model(), options), {}};
   run.adequacy =
       fitting::assess_psd_fit(run.fit, model_file.parameters, options, flags.max_nrmse_percent);
@@ -153,8 +160,14 @@ void add_fit_options(CLI::App& command, FitPsdFlags& psd) {
       .add_option("--excitation", psd.excitation_file,
                   "The road as a known excitation file instead of a road column")
       ->check(CLI::ExistingFile);
-  command.add_option("--free", psd.free, "Parameters to fit (1 to 4 model keys)")
+  command.add_option("--free", psd.free, "Parameters to fit (1 to 12 model keys)")
       ->required()
+      ->delimiter(',');
+  command
+      .add_option("--prior", psd.priors,
+                  "Data-sheet priors KEY=SHARE on free parameters: a Gaussian at the model file's "
+                  "value with SHARE of it as standard deviation (0.08 = ±8 %), separated by "
+                  "commas")
       ->delimiter(',');
   command.add_option("--band", psd.band_Hz, "Fitted band LOW,HIGH [Hz]")
       ->delimiter(',')

@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
@@ -513,6 +514,25 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
           std::sqrt((*cov)(static_cast<Eigen::Index>(b), static_cast<Eigen::Index>(b)));
     }
     result.parameters.push_back(p);
+  }
+  if (summary.termination_type == ceres::FAILURE && !stop.reached()) {
+    // Ceres stops when the derivatives cannot be evaluated at an accepted point: say where, in
+    // the parameters' names, since Ceres' own words ("Residual and Jacobian evaluation failed")
+    // name nothing a user can change.
+    std::vector<std::string> at;
+    for (std::size_t b = 0; b < n; ++b) {
+      const auto [lo, hi] = bounds[blocks[b].parameter];
+      const double v = result.parameters[b].value;
+      at.push_back(fmt::format("{} = {:.4g}{}", describe(blocks[b], records), v,
+                               v <= lo   ? " (its lower bound)"
+                               : v >= hi ? " (its upper bound)"
+                                         : ""));
+    }
+    result.termination = fmt::format(
+        "the strut model could not be run with derivatives near {}: the fit went where the model "
+        "stops being solvable. Values that run far from their start often stand in for a held "
+        "value that is off: check the values the fit holds, or free them",
+        fmt::join(at, ", "));
   }
   for (std::size_t r = 0; r < records.size(); ++r) {
     model::StrutTestParameters<double> fitted = base;

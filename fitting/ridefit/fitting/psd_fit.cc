@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <boost/math/special_functions/digamma.hpp>
+#include <boost/math/special_functions/trigamma.hpp>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -122,8 +123,8 @@ BinResidual bin_residual(double psd, double noise_psd, double log_bias, double m
           (1.0 + 2.0 * log_bias * q * (1.0 - q)) / shown};
 }
 
-// The Jet's size is the number of free parameters rounded up to 2, 4 or 6: the simulation's cost
-// grows with it, and most fits free two to four.
+// The Jet's size is the number of free parameters rounded up to 2, 4, 6, 8 or 12: the
+// simulation's cost grows with it, and most fits free two to four.
 template <int N>
 class PsdCost : public ceres::CostFunction {
   using Jet = ceres::Jet<double, N>;
@@ -338,6 +339,18 @@ struct PsdSetup {
   std::vector<double> body_log, wheel_log;
   NoiseFloors noise;
   double log_bias = 0.0;  // b = ln(ν/2) − ψ(ν/2) of the bins (bin_residual)
+  double bin_sd = 1.0;    // √ψ′(ν/2): the standard deviation of a bin's log-estimate
+};
+
+// A data sheet's Gaussian prior on a parameter block x = p/unit: s·(x·unit − mean)/sd, in the
+// units of the bins' residuals (PsdFitOptions::priors).
+struct PriorResidual {
+  double unit, mean, weight;  // weight = s/sd
+  template <typename T>
+  bool operator()(const T* x, T* residual) const {
+    residual[0] = T(weight) * (x[0] * T(unit) - T(mean));
+    return true;
+  }
 };
 
 PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
@@ -388,7 +401,9 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
   const std::size_t segments = (m.time_s.size() - welch.length) / (welch.length / 2) + 1;
   const double nu = signal::welch_degrees_of_freedom(welch.window, welch.length / 2, segments);
   const double log_bias = std::log(0.5 * nu) - boost::math::digamma(0.5 * nu);
-  return {fields, bounds, units, welch, body_log, wheel_log, noise_floors(m, options), log_bias};
+  const double bin_sd = std::sqrt(boost::math::trigamma(0.5 * nu));
+  return {fields,   bounds, units, welch, body_log, wheel_log, noise_floors(m, options),
+          log_bias, bin_sd};
 }
 
 simulate::AccelerationSolverOptions solver_options(const PsdFitOptions& options) {
@@ -408,6 +423,14 @@ ceres::CostFunction* new_psd_cost(const PsdMeasurement& m, const model::QuarterC
   }
   if (n <= 4) {
     return new PsdCost<4>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
+                          s.log_bias, solver);
+  }
+  if (n <= 6) {
+    return new PsdCost<6>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
+                          s.log_bias, solver);
+  }
+  if (n <= 8) {
+    return new PsdCost<8>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
                           s.log_bias, solver);
   }
   return new PsdCost<kMaxFree>(m, car, s.fields, s.units, s.welch, s.body_log, s.wheel_log, s.noise,
@@ -468,7 +491,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
   // A controlled damper follows the record's command when it has one.
   const model::QuarterCar car = given_car.with_command_from_road(m.road->has_command());
   const PsdSetup setup = prepare(m, car, options);
-  const auto& [fields, bounds, units, welch, body_log, wheel_log, noise, log_bias] = setup;
+  const auto& [fields, bounds, units, welch, body_log, wheel_log, noise, log_bias, bin_sd] = setup;
   PsdFitResult best;
   best.final_cost = std::numeric_limits<double>::infinity();
   for (int start_index = 0; start_index < std::max(1, options.starts); ++start_index) {
@@ -487,6 +510,16 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
     std::vector<double*> blocks;
     for (double& v : x) blocks.push_back(&v);
     problem.AddResidualBlock(cost, make_loss_function(options.loss, options.loss_scale), blocks);
+    int priors = 0;
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      const auto prior = options.priors.find(options.free[i]);
+      if (prior == options.priors.end()) continue;
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<PriorResidual, 1, 1>(
+              new PriorResidual{units[i], prior->second.mean, bin_sd / prior->second.sd}),
+          nullptr, &x[i]);
+      ++priors;
+    }
     for (std::size_t i = 0; i < fields.size(); ++i) {
       problem.SetParameterLowerBound(&x[i], 0, bounds[i].first / units[i]);
       problem.SetParameterUpperBound(&x[i], 0, bounds[i].second / units[i]);
@@ -534,7 +567,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
     result.termination =
         stop.reached() ? integration_resolution_message(stop.floor()) : summary.message;
     const double dof =
-        static_cast<double>(cost->num_residuals()) - static_cast<double>(fields.size());
+        static_cast<double>(cost->num_residuals() + priors) - static_cast<double>(fields.size());
     const double s2 = dof > 0 ? 2.0 * summary.final_cost / dof : 0.0;
     ceres::Covariance::Options covariance_options;
     covariance_options.algorithm_type = ceres::DENSE_SVD;

@@ -22,7 +22,8 @@ void require_positive(double value, const char* what) {
 
 void PsdFitOptions::validate(bool fitting) const {
   if (fitting && (free.empty() || free.size() > kMaxFree)) {
-    throw InputError(fmt::format("free parameters: name 1 to {} parameters to fit", kMaxFree));
+    throw InputError(fmt::format("free parameters: name 1 to {} parameters to fit ({} named)",
+                                 kMaxFree, free.size()));
   }
   std::set<std::string> freed;
   for (const auto& name : free) {
@@ -35,6 +36,17 @@ void PsdFitOptions::validate(bool fitting) const {
     }
     if (!freed.insert(name).second) {
       throw InputError(fmt::format("free parameters: '{}' is given twice", name));
+    }
+  }
+  for (const auto& [name, prior] : priors) {
+    if (fitting && std::find(free.begin(), free.end(), name) == free.end()) {
+      throw InputError(
+          fmt::format("prior on {}: it is not fitted (free it too, or drop the prior)", name));
+    }
+    if (!std::isfinite(prior.mean) || !(prior.sd > 0.0) || !std::isfinite(prior.sd)) {
+      throw InputError(fmt::format(
+          "prior on {}: mean {} and standard deviation {}; expected a finite mean and sd > 0", name,
+          prior.mean, prior.sd));
     }
   }
   for (const auto& [name, bound] : bounds) {

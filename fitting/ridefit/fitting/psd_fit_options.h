@@ -15,7 +15,7 @@ namespace ridefit::fitting {
 // What a PSD fit frees and how it compares spectra (Ceres' Solver::Options style: plain fields
 // with defaults, checked as a whole by validate()).
 struct PsdFitOptions {
-  std::vector<std::string> free;                            // quarter-car keys, at most 6
+  std::vector<std::string> free;                            // quarter-car keys, at most 12
   std::map<std::string, std::pair<double, double>> bounds;  // default: a decade each way
   double band_low_Hz = 0.5;
   double band_high_Hz = 30.0;
@@ -37,15 +37,28 @@ struct PsdFitOptions {
   // to the measured PSD above the band); 0 = no floor (the plain log-PSD residual).
   std::optional<double> body_noise_psd;
   std::optional<double> wheel_noise_psd;
+  // Gaussian priors on free parameters, as a data sheet states its values (mean ± sd, in the
+  // parameter's SI unit). Each adds the residual s·(p − mean)/sd, s the standard deviation of a
+  // bin's log-PSD residual (√ψ′(ν/2) for Welch bins of ν degrees of freedom), so that one prior
+  // weighs as one bin's scatter would at one standard deviation. A parameter without one has
+  // only its bounds. The mean is the sheet's value, not the fit's start: a fit that starts from
+  // a refitted model keeps the prior where the sheet put it.
+  struct GaussianPrior {
+    double mean = 0.0;
+    double sd = 0.0;
+  };
+  std::map<std::string, GaussianPrior> priors;
 
-  // At most this many free parameters: six already take minutes per fit, and the spectra of
-  // two channels rarely determine more.
-  static constexpr std::size_t kMaxFree = 6;
+  // At most this many free parameters: a baseline whose masses, stiffnesses, damping and tyre
+  // are all uncertain (with priors) and an effect's two or three; beyond it the Jets' width
+  // makes a fit slower than a diagnosis can wait for.
+  static constexpr std::size_t kMaxFree = 12;
 
   // InputError naming the option for: an unknown or repeated free parameter or more than
   // kMaxFree of them (and none at all when `fitting`), bounds with lower >= upper or not
-  // finite, a band that is not 0 < low < high, a segment, loss
-  // scale, tolerance or start count that is not > 0, a negative iteration limit.
+  // finite, a prior on a parameter that is not free or with sd <= 0 or not finite, a band
+  // that is not 0 < low < high, a segment, loss scale, tolerance or start count that is not > 0,
+  // a negative iteration limit.
   void validate(bool fitting = true) const;
 };
 

@@ -9,6 +9,7 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/effect.h"
 #include "ridefit/io/yaml_map.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/log_sweep.h"
 
 namespace ridefit::synthetic {
@@ -118,6 +119,42 @@ void read_sensor(const io::YamlMap& d, HiddenDataset& out) {
   s.finish();
 }
 
+// `baseline:` of a vehicle dataset: its model and how its values are off.
+void read_baseline(const io::YamlMap& d, HiddenDataset& out) {
+  if (out.strut_rig) {
+    throw InputError(fmt::format(
+        "{}: data-sheet baselines are written for vehicle datasets only (a rig diagnosis holds "
+        "the strut's values it does not free)",
+        d.locate("baseline")));
+  }
+  const io::YamlMap b = d.map("baseline");
+  out.baseline_model = b.file("model");
+  if (b.has("datasheet_seed") == b.has("errors")) {
+    throw InputError(fmt::format(
+        "{}: give either datasheet_seed (errors drawn from the data-sheet tolerances) or errors "
+        "(a share per key)",
+        d.locate("baseline")));
+  }
+  if (b.has("datasheet_seed")) out.baseline_datasheet_seed = b.integer("datasheet_seed");
+  if (b.has("errors")) {
+    const io::YamlMap errors = b.map("errors");
+    for (const auto& key : errors.keys()) {
+      if (!model::quarter_car_parameter_index(key)) {
+        throw InputError(
+            fmt::format("{}: '{}' is not a quarter-car parameter", errors.locate(key), key));
+      }
+      const double share = errors.number(key);
+      if (!(share > -1.0 && share <= 10.0)) {
+        throw InputError(fmt::format("{} is {}, expected a share in (-1, 10] of the value",
+                                     errors.locate(key), share));
+      }
+      out.baseline_errors[key] = share;
+    }
+    errors.finish();
+  }
+  b.finish();
+}
+
 HiddenDataset read_dataset(const io::YamlMap& d) {
   HiddenDataset out;
   out.name = d.text("name");
@@ -150,6 +187,7 @@ HiddenDataset read_dataset(const io::YamlMap& d) {
         fmt::format("{}: a strut rig dataset takes noise_N, not a sensor", d.locate("sensor")));
   }
   if (d.has("sensor")) read_sensor(d, out);
+  if (d.has("baseline")) read_baseline(d, out);
   d.finish();
   return out;
 }
@@ -174,6 +212,8 @@ std::vector<HiddenDataset> read_hidden_spec(const std::filesystem::path& spec_fi
   }
   return datasets;
 }
+
+std::string baseline_file_name(const HiddenDataset& d) { return d.name + "_baseline.yaml"; }
 
 std::string record_file_name(const HiddenDataset& d, int record) {
   return record == 1 ? d.name + ".csv" : fmt::format("{}_{}.csv", d.name, record);

@@ -29,6 +29,10 @@ namespace ridefit::synthetic {
 //       sensor: {noise: 0.005, high_pass_Hz: 0.1, low_pass_Hz: 100,
 //                mount: {channel: body_acc, frequency_Hz: 12, damping_ratio: 0.05}}
 //       seed: 11                               # noise seed (default 1)
+//       baseline: {model: baselines/passat_slip.yaml, datasheet_seed: 7}  # optional: writes
+//                 # NAME_baseline.yaml, that model with values off as a data sheet's are, drawn
+//                 # (datasheet_values.h); or errors: {spring_stiffness_N_per_m: -0.07, ...},
+//                 # each value times 1 + its share (vehicle datasets)
 //     - name: rig_gas_force                    # a strut rig test instead
 //       kind: strut_rig
 //       model: ../vehicles/passat_b8_front.yaml  # its strut, put on the rig (strut_on_rig)
@@ -57,6 +61,11 @@ struct HiddenDataset {
   // A strut rig dataset: its multisine and load-cell noise.
   std::vector<double> rig_amplitudes_m, rig_frequencies_Hz;
   double noise_N = 0.6;
+  // The baseline a diagnosis of it starts from, as an engineer's data sheet gives it (empty
+  // model: none written): errors drawn with datasheet_seed, or the given shares.
+  std::filesystem::path baseline_model;
+  long baseline_datasheet_seed = 0;
+  std::map<std::string, double> baseline_errors;
   // Where the dataset and its `set:` are in the spec ("FILE: key '...'"), for messages.
   std::string location;
   std::string set_location;
@@ -65,11 +74,15 @@ struct HiddenDataset {
 // Every dataset of `spec_file`. InputError naming the file and key for a missing, unknown or
 // out-of-range key, an unknown effect (listing the known ones), a rig multisine with unequal
 // lists or a frequency at or above Nyquist, a vehicle sensor band or log sweep reaching Nyquist,
-// a rig dataset with a sensor, no datasets, or two datasets of one name (their files would
-// collide). Models and excitations are only named here; load_truth_model reads them.
+// a rig dataset with a sensor or a baseline, a baseline with neither or both of datasheet_seed
+// and errors or an error share outside (-1, 10], no datasets, or two datasets of one name (their
+// files would collide). Models and excitations are only named here; load_truth_model reads them.
 std::vector<HiddenDataset> read_hidden_spec(const std::filesystem::path& spec_file);
 
 // The file of record k (1-based): NAME.csv, NAME_2.csv, ...
 std::string record_file_name(const HiddenDataset& d, int record);
+
+// The data-sheet baseline's file, NAME_baseline.yaml.
+std::string baseline_file_name(const HiddenDataset& d);
 
 }  // namespace ridefit::synthetic

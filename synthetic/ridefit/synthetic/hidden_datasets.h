@@ -35,6 +35,10 @@ void write_hidden_dataset(const HiddenDataset& d, const HiddenTruthModel& truth,
                           const std::filesystem::path& dir, const std::filesystem::path& out_dir,
                           long seed_offset, const RecordWritten& written);
 
+// NAME_baseline.yaml for a dataset with a `baseline:` (hidden_dataset_spec.h): its model file
+// with the values the data sheet gets wrong (drawn, datasheet_values.h, or the spec's shares).
+void write_datasheet_baseline(const HiddenDataset& d, const std::filesystem::path& out_dir);
+
 // The two kinds, as write_hidden_dataset dispatches them.
 void write_rig_dataset(const HiddenDataset& d, const model::StrutTestParameters<double>& strut,
                        const std::filesystem::path& dir, const std::filesystem::path& out_dir,

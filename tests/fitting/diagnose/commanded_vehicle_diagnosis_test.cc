@@ -49,7 +49,9 @@ TEST(CommandedVehicleDiagnosis, SwitchingCurrentOnTheRoadNamesCommandDependence)
   options.fit.segment_s = 4.0;
   options.map.segment_s = 4.0;
   options.effects = {"command_dependence", "damper_friction", "tyre_damping"};
-  const model::QuarterCar baseline(model::DamperState::kSlip, passive_slip());
+  auto passive = passive_slip();
+  passive.damping_Ns_per_m = 900.0;  // the passive sheet's damping, 50 % above the truth's 600
+  const model::QuarterCar baseline(model::DamperState::kSlip, passive);
   const DiagnosisResult r = diagnose({baseline}, data, options);
   ASSERT_FALSE(r.named.empty()) << r.verdict;
   EXPECT_EQ(r.named.front(), "command_dependence") << r.verdict;

@@ -76,9 +76,11 @@ TEST(LoopDiagnosis, NamesDamperFrictionOnAFrictionlessBaseline) {
   auto truth = passat_strut();
   auto bare = passat_strut();
   bare.coulomb_force_N = 0.0;
+  bare.dahl_sigma0_N_per_m = 2e6;  // a guess 2.5× below the truth's 5e6: loops fit σ0
   const DiagnosisResult r = diagnose_loops(baseline_of(bare), records_of(truth, 3), {});
   expect_named_first(r, "damper_friction");
   EXPECT_NEAR(fitted(r, "coulomb_force_N"), 60.0, 6.0);
+  EXPECT_NEAR(fitted(r, "dahl_sigma0_N_per_m"), 5e6, 1e6);
 }
 
 TEST(LoopDiagnosis, RaisesNoAlarmOnTheBaselinesOwnRecords) {

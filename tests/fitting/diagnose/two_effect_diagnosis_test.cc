@@ -30,9 +30,11 @@ double fitted(const DiagnosisResult& r, const std::string& name) {
   return NAN;
 }
 
-TEST(TwoEffectDiagnosis, FrictionAndTyreDampingFromABareBaselineBothNamedWithinFivePercent) {
-  const auto baseline =
-      passat(model::DamperState::kSlip, {{"coulomb_force_N", 0.0}, {"tyre_damping_Ns_per_m", 0.0}});
+TEST(TwoEffectDiagnosis, FrictionAndTyreDampingFromABareBaselineBothNamedWithinEightPercent) {
+  // σ0, which the friction effect keeps on spectra, a guess 2.5× below the truth's 5e6 N/m.
+  const auto baseline = passat(
+      model::DamperState::kSlip,
+      {{"coulomb_force_N", 0.0}, {"tyre_damping_Ns_per_m", 0.0}, {"dahl_sigma0_N_per_m", 2e6}});
   const auto truth = passat(model::DamperState::kStickSlip,
                             {{"coulomb_force_N", 60.0}, {"tyre_damping_Ns_per_m", 600.0}});
   const DiagnosisData data{testing::hidden_effect_record(truth, road::Iso8608Class::kA, 41, 60.0),
@@ -46,8 +48,11 @@ TEST(TwoEffectDiagnosis, FrictionAndTyreDampingFromABareBaselineBothNamedWithinF
       << r.verdict;
   EXPECT_TRUE(std::find(r.named.begin(), r.named.end(), "tyre_damping") != r.named.end())
       << r.verdict;
-  EXPECT_NEAR(fitted(r, "coulomb_force_N"), 60.0, 3.0);
-  EXPECT_NEAR(fitted(r, "tyre_damping_Ns_per_m"), 600.0, 30.0);
+  // Within 8 %: the σ0 held 2.5× low softens the stuck strut's series stiffness by 12 %, which
+  // the fit makes up with both (measured: Fc 63.1 N, tyre damping 636 N·s/m; within 5 % when σ0
+  // was held at the truth).
+  EXPECT_NEAR(fitted(r, "coulomb_force_N"), 60.0, 0.08 * 60.0);
+  EXPECT_NEAR(fitted(r, "tyre_damping_Ns_per_m"), 600.0, 0.08 * 600.0);
 }
 
 }  // namespace

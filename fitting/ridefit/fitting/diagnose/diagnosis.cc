@@ -9,6 +9,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/common/parallel_for.h"
+#include "ridefit/fitting/diagnose/damper_speed.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
@@ -29,6 +30,29 @@ PsdMeasurement slice(const PsdMeasurement& m, std::size_t begin, std::size_t end
   part.body_acc_m_per_s2 = cut(m.body_acc_m_per_s2);
   part.wheel_acc_m_per_s2 = cut(m.wheel_acc_m_per_s2);
   return part;
+}
+
+// The priors of the baseline's uncertain values (DiagnosisOptions::baseline_tolerances) that
+// apply to it: a value that is off (0: no tyre damping, no friction; a rigid top mount) or that a
+// locked damper does not use has no data sheet tolerance to speak of.
+std::map<std::string, PsdFitOptions::GaussianPrior> sheet_priors(
+    const model::QuarterCar& car, const std::map<std::string, double>& tolerances) {
+  namespace rows = model::quarter_car_rows;
+  std::map<std::string, PsdFitOptions::GaussianPrior> priors;
+  for (const auto& [name, share] : tolerances) {
+    const double v = parameter_value(car, name);
+    if (!(v > 0.0) || !std::isfinite(v)) continue;
+    if (name == rows::top_mount_stiffness_N_per_m.key_string() && v >= 1e9) continue;
+    const bool damper_path =
+        name == rows::damping_Ns_per_m.key_string() || name == rows::coulomb_force_N.key_string();
+    if (damper_path && car.damper_state() == model::DamperState::kStick) continue;
+    if (name == rows::coulomb_force_N.key_string() &&
+        car.damper_state() != model::DamperState::kStickSlip) {
+      continue;
+    }
+    priors[name] = {v, share * v};
+  }
+  return priors;
 }
 
 std::vector<std::string> default_free(const model::QuarterCar& car) {
@@ -157,10 +181,23 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   // The reported fits (baseline and with the named effects) take the tight tolerance, from the
   // screening fit's optimum: what the report, the map and model.yaml show.
   const PsdFitOptions final_fit = with_tolerance(options.final_relative_tolerance);
+  // The data sheet's uncertain values: freed in every fit, each with its prior at the sheet's
+  // value.
+  std::vector<std::string> baseline_free =
+      options.baseline_free.empty() ? default_free(baseline.car) : options.baseline_free;
+  const auto priors = sheet_priors(baseline.car, options.baseline_tolerances);
+  for (const auto& [name, prior] : priors) {
+    if (std::find(baseline_free.begin(), baseline_free.end(), name) == baseline_free.end()) {
+      baseline_free.push_back(name);
+    }
+  }
   const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& free,
                               const ParameterBounds& bounds, FitPurpose purpose) {
     PsdFitOptions settings = purpose == FitPurpose::kReported ? final_fit : screening;
     if (purpose == FitPurpose::kProbe) settings.max_iterations = 0;
+    for (const auto& [name, prior] : priors) {  // an effect may have taken the parameter over
+      if (std::find(free.begin(), free.end(), name) != free.end()) settings.priors[name] = prior;
+    }
     return fit_and_score(start, free, bounds, data, settings, map_options);
   };
   SelectionOptions selection_options = options.selection;
@@ -169,11 +206,20 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   DiagnosisModel start = baseline;
   start.kind = DataKind::kVehicleSpectra;
   start.has_command = data.training.road != nullptr && data.training.road->has_command();
-  const Selection selection = select_effects(
-      start, options.baseline_free.empty() ? default_free(baseline.car) : options.baseline_free,
-      options.fit.bounds, effects_to_try(options.effects), fit, selection_options, say);
+  start.damper_speed_rms_m_per_s = damper_speed_rms_m_per_s(baseline.car, data.training);
+  const Selection selection =
+      select_effects(start, baseline_free, options.fit.bounds, effects_to_try(options.effects), fit,
+                     selection_options, say);
 
   DiagnosisResult result = result_of(selection, DataKind::kVehicleSpectra);
+  for (const auto& [name, prior] : priors) {
+    DiagnosisResult::SheetValue v{name, prior.mean, prior.sd / prior.mean,
+                                  parameter_value(result.final_model.car, name), std::nullopt};
+    for (const auto& p : result.final_parameters) {
+      if (p.name == name) v.standard_error = p.standard_error;
+    }
+    result.sheet_values.push_back(v);
+  }
   const ScoredFit& before = selection.baseline;
   const ScoredFit& after = selection.final_fit;
   result.before = map_of(data.held_out, before.model.car, before.held_out_signals[0],

@@ -43,6 +43,16 @@ struct DiagnosisResult {
   std::vector<FittedValue> final_parameters;
   // "missing effect found: …", "no missing effect found", or the unexplained disagreement.
   std::string verdict;
+  // Where the final fit put the values the baseline's data sheet was unsure of
+  // (DiagnosisOptions::baseline_tolerances): a finding in itself ("spring −7 % ± 2 %").
+  struct SheetValue {
+    std::string name;
+    double sheet = 0.0;      // the baseline's value, the prior's mean
+    double tolerance = 0.0;  // the prior's standard deviation as a share of it
+    double fitted = 0.0;
+    std::optional<double> standard_error;
+  };
+  std::vector<SheetValue> sheet_values;
 
   // Vehicle spectra: the maps of the held-out data against the fitted baseline and the final
   // model, the simulations behind them (measured time base), the significant regions left that

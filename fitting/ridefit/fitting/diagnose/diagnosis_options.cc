@@ -36,7 +36,28 @@ void check_effect_ids(const std::vector<std::string>& ids) {
   }
 }
 
+std::map<std::string, double> datasheet_tolerances() {
+  namespace rows = model::quarter_car_rows;
+  return {{rows::sprung_mass_kg.key_string(), 0.03},
+          {rows::unsprung_mass_kg.key_string(), 0.03},
+          {rows::tyre_stiffness_N_per_m.key_string(), 0.08},
+          {rows::spring_stiffness_N_per_m.key_string(), 0.08},
+          {rows::damping_Ns_per_m.key_string(), 0.12},
+          {rows::top_mount_stiffness_N_per_m.key_string(), 0.15},
+          {rows::coulomb_force_N.key_string(), 0.25}};
+}
+
 void DiagnosisOptions::validate() const {
+  for (const auto& [name, share] : baseline_tolerances) {
+    if (!model::quarter_car_parameter_index(name)) {
+      throw InputError(
+          fmt::format("baseline tolerances: '{}' is not a quarter-car parameter", name));
+    }
+    if (!(share > 0.0 && share <= 10.0) || !std::isfinite(share)) {
+      throw InputError(fmt::format(
+          "baseline tolerance of {}: {} of its value; expected a share in (0, 10]", name, share));
+    }
+  }
   std::set<std::string> freed;
   for (const auto& name : baseline_free) {
     if (!model::quarter_car_parameter_index(name)) {

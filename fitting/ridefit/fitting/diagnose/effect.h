@@ -27,6 +27,10 @@ struct DiagnosisModel {
   std::vector<std::string> free{};
   // The records carry a damper command (a current or voltage column): set by the diagnosis.
   bool has_command = false;
+  // The RMS speed of the damper's stroke in the training records [m/s] (the rig's, or the
+  // baseline's travel rate over the road), set by the diagnosis: where a velocity law's knee
+  // starts, read off the data rather than assumed. 0 when unknown.
+  double damper_speed_rms_m_per_s = 0.0;
 };
 
 // A parameter a fit frees, with the bounds that keep it physical.

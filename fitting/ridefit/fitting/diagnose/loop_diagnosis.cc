@@ -7,6 +7,7 @@
 #include <map>
 
 #include "ridefit/common/errors.h"
+#include "ridefit/fitting/diagnose/damper_speed.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
@@ -181,6 +182,7 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   start.kind = DataKind::kStrutLoops;
   start.has_command = std::all_of(data.training.begin(), data.training.end(),
                                   [](const HysteresisRecord& r) { return !r.command.empty(); });
+  start.damper_speed_rms_m_per_s = damper_speed_rms_m_per_s(data.training);
   const Selection selection =
       select_effects(start, free, {}, effects_to_try(options.effects), fit, selection_options, say);
 

@@ -29,7 +29,7 @@ class BumpStop : public Effect {
     // Start soft (the spring's own rate) and at a typical clearance, so the first evaluations
     // change the model gently.
     const double k = baseline.car.parameters().spring_stiffness_N_per_m;
-    return {{{rows::bump_stop_stiffness_N_per_m.key_string(), 3.0 * k},
+    return {{{rows::bump_stop_stiffness_N_per_m.key_string(), k},
              {rows::bump_stop_clearance_m.key_string(), 0.02}},
             std::nullopt,
             {{rows::bump_stop_stiffness_N_per_m.key_string(), 0.1 * k, 1000.0 * k},

@@ -17,7 +17,8 @@ class DamperAsymmetry : public Effect {
            "rough roads and the response gains even harmonics";
   }
   std::string not_applicable(const DiagnosisModel& baseline) const override {
-    // On the rig the damper path is the car's (StrutParameters::damper_path): its valving acts there.
+    // On the rig the damper path is the car's (StrutParameters::damper_path): its valving acts
+    // there.
     if (baseline.kind == DataKind::kStrutLoops) {
       return baseline.strut.compression_to_rebound_ratio != 1.0
                  ? "the baseline's damper is already asymmetric"

@@ -1,4 +1,5 @@
 // damper_digressive: a blow-off knee in the damper's force over velocity.
+#include <algorithm>
 #include <memory>
 
 #include "ridefit/fitting/diagnose/effect.h"
@@ -35,7 +36,13 @@ class DamperDigressive : public Effect {
     const double c = baseline.kind == DataKind::kStrutLoops
                          ? baseline.strut.damping_Ns_per_m
                          : baseline.car.parameters().damping_Ns_per_m;
-    return {{{rows::damper_knee_velocity_m_per_s.key_string(), 0.1},
+    // A knee shows only within the stroke speeds the records reach: start it at a third of their
+    // RMS (a valve opens well inside the speeds it meets; from the RMS itself the fit of a
+    // 20 s class D record ended in the low-knee valley and friction was named instead).
+    const double knee = baseline.damper_speed_rms_m_per_s > 0.0
+                            ? std::clamp(0.3 * baseline.damper_speed_rms_m_per_s, 0.01, 1.0)
+                            : 0.1;
+    return {{{rows::damper_knee_velocity_m_per_s.key_string(), knee},
              {rows::damping_above_knee_Ns_per_m.key_string(), 0.5 * c}},
             std::nullopt,
             {{rows::damper_knee_velocity_m_per_s.key_string(), 0.005, 2.0},
@@ -43,7 +50,7 @@ class DamperDigressive : public Effect {
             // A second start with the damping split around the baseline's fitted value: from the
             // first alone the fit could slide down the knee–damping valley (a low knee with a
             // stiff damper below it) that a short record barely tells from the truth.
-            {{{rows::damper_knee_velocity_m_per_s.key_string(), 0.1},
+            {{{rows::damper_knee_velocity_m_per_s.key_string(), knee},
               {rows::damping_above_knee_Ns_per_m.key_string(), 0.8 * c},
               {rows::damping_Ns_per_m.key_string(), 2.0 * c}}}};
   }

@@ -1,6 +1,8 @@
 // damper_friction: Dahl friction in the damper path (seed 000, Section 3.1), on the road or on
 // the rig.
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "ridefit/fitting/diagnose/effect.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
@@ -38,11 +40,18 @@ class DamperFriction : public Effect {
                              ? baseline.strut.dahl_sigma0_N_per_m
                              : baseline.car.parameters().dahl_sigma0_N_per_m;
     const double sigma0 = named > 1e3 ? named : 5e6;
+    std::vector<FreeParameter> free{{rows::coulomb_force_N.key_string(), 1.0, 1000.0}};
+    // A rig loop shows the pre-sliding rise after each reversal, so σ0 is fitted there (a named
+    // one is a guess, and held it would leave its error to other effects); the records' own
+    // estimate (strut_start.h) is the fit's second start.
+    if (baseline.kind == DataKind::kStrutLoops) {
+      free.push_back({rows::dahl_sigma0_N_per_m.key_string(), 1e4, 1e10});
+    }
     return {{{rows::dahl_sigma0_N_per_m.key_string(), sigma0},
              {rows::coulomb_force_N.key_string(), 30.0},
              {rows::dahl_exponent.key_string(), 1.0}},
             model::DamperState::kStickSlip,
-            {{rows::coulomb_force_N.key_string(), 1.0, 1000.0}},
+            std::move(free),
             {}};
   }
 };

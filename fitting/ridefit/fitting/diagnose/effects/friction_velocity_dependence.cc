@@ -38,13 +38,16 @@ class FrictionVelocityDependence : public Effect {
   }
   EffectChange change(const DiagnosisModel& baseline) const override {
     const double fc = baseline.strut.coulomb_force_N;
-    return {{{rows::static_friction_force_N.key_string(), 1.3 * fc},
+    // Starts at twice and 2.5 times the sliding level, neither near the 1.5·Fc of the tests'
+    // truths. (From just above Fc, 1.05·Fc, a one-speed triangle's fit wandered to a hump wider
+    // than the test's speed, Fc halved, and the effect was no longer seen as undetermined there.)
+    return {{{rows::static_friction_force_N.key_string(), 2.0 * fc},
              {rows::stribeck_velocity_m_per_s.key_string(), 0.01}},
             std::nullopt,
             {{rows::static_friction_force_N.key_string(), 1.001 * fc, 5.0 * fc},
              {rows::stribeck_velocity_m_per_s.key_string(), 1e-4, 0.5}},
             // The hump's width and height trade off: start also narrow and tall.
-            {{{rows::static_friction_force_N.key_string(), 1.8 * fc},
+            {{{rows::static_friction_force_N.key_string(), 2.5 * fc},
               {rows::stribeck_velocity_m_per_s.key_string(), 0.002}}}};
   }
 };
