@@ -12,6 +12,9 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <system_error>
+#include <thread>
+#include <type_traits>
 
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/fit_adequacy.h"
@@ -56,6 +59,16 @@ std::string start_failure(const std::vector<HysteresisRecord>& records,
          "file's values";
 }
 
+// The steps of a record's last run in doubles and the values it ran at. Ceres evaluates the
+// residuals at a trial point and, when it accepts the point, the Jacobian there: the replay in
+// Jets then follows these steps instead of running the record once more to record them. One per
+// residual block: Ceres never evaluates a block on two threads at once.
+struct KeptSteps {
+  std::vector<double> values;
+  simulate::EsdirkStepHistory steps;
+  bool valid = false;
+};
+
 // The force residuals of one record, as a function of the blocks it uses.
 struct RecordResidual {
   const HysteresisRecord* record = nullptr;
@@ -64,6 +77,34 @@ struct RecordResidual {
   std::vector<double> units;        // block value × unit = the parameter
   simulate::StrutTestSolverOptions solver;
   double weight = 1.0;  // the record's residuals are scaled by this (RecordWeighting)
+  // Keep each run's steps for a Jacobian at the same point (the fit's own problem; null: run
+  // afresh every time, as the problems that measure the integration's scatter do).
+  std::shared_ptr<KeptSteps> kept;
+
+  template <typename T>
+  std::vector<double> values_of_blocks(T const* const* blocks) const {
+    std::vector<double> v(fields.size());
+    for (std::size_t b = 0; b < fields.size(); ++b) v[b] = value_of(blocks[b][0]);
+    return v;
+  }
+  // The solver's options for a run in doubles at these values: it records its steps.
+  simulate::StrutTestSolverOptions recording_options(const std::vector<double>& values) const {
+    simulate::StrutTestSolverOptions options = solver;
+    if (kept == nullptr || solver.frozen_steps != nullptr) return options;
+    kept->valid = false;
+    kept->values = values;
+    options.record_steps = &kept->steps;
+    return options;
+  }
+  // ... and for a replay in Jets: on the kept steps when they were recorded at these values.
+  simulate::StrutTestSolverOptions replay_options(const std::vector<double>& values) const {
+    simulate::StrutTestSolverOptions options = solver;
+    if (kept != nullptr && solver.frozen_steps == nullptr && kept->valid &&
+        kept->values == values) {
+      options.frozen_steps = &kept->steps;
+    }
+    return options;
+  }
 
   template <typename T>
   bool operator()(T const* const* blocks, T* residuals) const {
@@ -76,15 +117,116 @@ struct RecordResidual {
       strut_parameter(p, fields[b]) = blocks[b][0] * T(units[b]);
       strut_parameter(v, fields[b]) = value_of(blocks[b][0]) * units[b];
     }
-    const auto force =
-        simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v, solver,
-                                      record->command, record->velocity_m_per_s);
+    const std::vector<double> at = values_of_blocks(blocks);
+    const simulate::StrutTestSolverOptions options =
+        std::is_same_v<T, double> ? recording_options(at) : replay_options(at);
+    auto force = simulate::strut_test_force<T>(record->time_s, record->displacement_m, p, v,
+                                               options, record->command, record->velocity_m_per_s);
+    if constexpr (std::is_same_v<T, double>) {
+      if (options.record_steps != nullptr) kept->valid = force.has_value();
+    }
     if (!force) return false;
     for (std::size_t k = 0; k < force->size(); ++k) {
       residuals[k] = ((*force)[k] - T(record->force_N[k])) * weight;
     }
     return true;
   }
+};
+
+// A record with many free values (an MR record's command law, lag, knee, free play and mass: 9-12)
+// in two halves of Jet lanes on two threads over one recorded run (the trial point's kept steps,
+// or a run made here to record them), each half replaying it (esdirk_tangents.h) with Jets as
+// wide as its share, concurrently: a record fitted alone (the NEES random test) otherwise ran its
+// replay on one core. The derivatives are the same as one pass's, lane by lane
+// (JacobianPasses.SplitJacobianIsTheOnePassJacobian).
+class SplitLaneRecordCost final : public ceres::CostFunction {
+ public:
+  static constexpr int kLanes = 6;  // per half: 7-12 free values
+
+  SplitLaneRecordCost(RecordResidual* functor, int blocks, int residuals) : functor_(functor) {
+    for (int i = 0; i < blocks; ++i) mutable_parameter_block_sizes()->push_back(1);
+    set_num_residuals(residuals);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    const RecordResidual& f = *functor_;
+    if (jacobians == nullptr) return f(parameters, residuals);
+    model::StrutTestParameters<double> v = f.base;
+    for (std::size_t b = 0; b < f.fields.size(); ++b) {
+      strut_parameter(v, f.fields[b]) = parameters[b][0] * f.units[b];
+    }
+    const HysteresisRecord& record = *f.record;
+    simulate::StrutTestSolverOptions solver = f.replay_options(f.values_of_blocks(parameters));
+    simulate::EsdirkStepHistory history;
+    if (solver.frozen_steps == nullptr) {
+      try {
+        history = simulate::strut_test_steps(record.time_s, record.displacement_m, v, solver,
+                                             record.command, record.velocity_m_per_s);
+      } catch (const RunError&) {
+        return false;
+      }
+      solver.frozen_steps = &history;
+    }
+    const std::size_t n = f.fields.size();
+    const std::size_t half = (n + 1) / 2;
+    bool ok[2] = {false, false};
+    auto replay = [&](int part) {
+      const std::size_t first = part == 0 ? 0 : half, last = part == 0 ? half : n;
+      ok[part] = replay_lanes(v, solver, first, last, parameters, part == 0 ? residuals : nullptr,
+                              jacobians);
+    };
+    std::thread other;
+    try {
+      other = std::thread([&] { replay(1); });
+    } catch (const std::system_error&) {  // no thread to be had: both halves here
+      replay(1);
+    }
+    replay(0);
+    if (other.joinable()) other.join();
+    return ok[0] && ok[1];
+  }
+
+ private:
+  using Lanes = ceres::Jet<double, kLanes>;
+
+  // The residuals (when `residuals` is not null) and the Jacobian columns of free values
+  // [first, last), seeded on lanes 0…last−first. Never throws (it runs on a thread of its own).
+  bool replay_lanes(const model::StrutTestParameters<double>& v,
+                    const simulate::StrutTestSolverOptions& solver, std::size_t first,
+                    std::size_t last, double const* const* parameters, double* residuals,
+                    double** jacobians) const {
+    const RecordResidual& f = *functor_;
+    const HysteresisRecord& record = *f.record;
+    try {
+      model::StrutTestParameters<Lanes> p;
+      for (std::size_t i = 0; i < kStrutParameters.size(); ++i) {
+        strut_parameter(p, i) = Lanes(strut_parameter(v, i));
+      }
+      for (std::size_t b = first; b < last; ++b) {
+        strut_parameter(p, f.fields[b]) =
+            Lanes(parameters[b][0] * f.units[b], static_cast<int>(b - first));
+      }
+      const auto force =
+          simulate::strut_test_force<Lanes>(record.time_s, record.displacement_m, p, v, solver,
+                                            record.command, record.velocity_m_per_s);
+      if (!force) return false;
+      for (std::size_t k = 0; k < force->size(); ++k) {
+        const Lanes& r = (*force)[k];
+        if (residuals != nullptr) residuals[k] = (r.a - record.force_N[k]) * f.weight;
+        for (std::size_t b = first; b < last; ++b) {
+          if (jacobians[b] != nullptr) {
+            jacobians[b][k] = r.v[static_cast<Eigen::Index>(b - first)] * f.units[b] * f.weight;
+          }
+        }
+      }
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+  std::unique_ptr<RecordResidual> functor_;
 };
 
 // Jets as wide as the record's free values: Ceres evaluates a DynamicAutoDiffCostFunction in
@@ -98,7 +240,12 @@ ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residual
   return cost;
 }
 
-ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residuals) {
+ceres::CostFunction* make_cost(RecordResidual* functor, int blocks, int residuals,
+                               JacobianPasses passes = JacobianPasses::kSplitAcrossTwoCores) {
+  if (passes == JacobianPasses::kSplitAcrossTwoCores && blocks > SplitLaneRecordCost::kLanes &&
+      blocks <= 2 * SplitLaneRecordCost::kLanes) {
+    return new SplitLaneRecordCost(functor, blocks, residuals);
+  }
   switch (blocks) {
     case 1:
       return make_cost<1>(functor, blocks, residuals);
@@ -294,13 +441,16 @@ std::optional<Eigen::MatrixXd> assess_uncertainty(
 ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
                                           const model::StrutTestParameters<double>& base,
                                           const std::vector<std::string>& free,
-                                          const simulate::StrutTestSolverOptions& solver) {
-  auto* functor = new RecordResidual{&record, base, {}, {}, solver};
+                                          const simulate::StrutTestSolverOptions& solver,
+                                          const HysteresisCostOptions& cost) {
+  auto* functor = new RecordResidual{&record, base, {}, {}, solver, 1.0, nullptr};
+  if (cost.keep_steps) functor->kept = std::make_shared<KeptSteps>();
   for (const auto& name : free) {
     functor->fields.push_back(strut_parameter_index(name));
     functor->units.push_back(1.0);
   }
-  return make_cost(functor, static_cast<int>(free.size()), static_cast<int>(record.force_N.size()));
+  return make_cost(functor, static_cast<int>(free.size()), static_cast<int>(record.force_N.size()),
+                   cost.passes);
 }
 
 // Each record's weight under `weighting`: 1, or the records' RMS spread over its own spread.
@@ -394,9 +544,11 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
 
   // Every record's residual block, integrated at `solver`'s settings.
   const std::vector<double> weights = record_weights(records, options.record_weighting);
-  auto add_records = [&](ceres::Problem& problem, const simulate::StrutTestSolverOptions& solver) {
+  auto add_records = [&](ceres::Problem& problem, const simulate::StrutTestSolverOptions& solver,
+                         bool keep_steps) {
     for (std::size_t r = 0; r < records.size(); ++r) {
-      auto* functor = new RecordResidual{&records[r], base, {}, {}, solver, weights[r]};
+      auto* functor = new RecordResidual{&records[r], base, {}, {}, solver, weights[r], nullptr};
+      if (keep_steps) functor->kept = std::make_shared<KeptSteps>();
       std::vector<double*> used;
       for (std::size_t b = 0; b < blocks.size(); ++b) {
         if (blocks[b].record < 0 || blocks[b].record == static_cast<int>(r)) {
@@ -411,7 +563,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     }
   };
   ceres::Problem problem;
-  add_records(problem, options.solver);
+  add_records(problem, options.solver, true);
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     problem.SetParameterLowerBound(&values[b], 0, bounds[blocks[b].parameter].first / units[b]);
     problem.SetParameterUpperBound(&values[b], 0, bounds[blocks[b].parameter].second / units[b]);
@@ -442,8 +594,8 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   ceres::Problem at_tolerance, at_coarser;
   simulate::StrutTestSolverOptions coarser = options.solver;
   coarser.relative_tolerance = coarser_tolerance(coarser.relative_tolerance);
-  add_records(at_tolerance, options.solver);
-  add_records(at_coarser, coarser);
+  add_records(at_tolerance, options.solver, false);
+  add_records(at_coarser, coarser, false);
   // The scatter under the same robust loss as the cost it is compared with, of the raw residuals.
   const std::unique_ptr<ceres::LossFunction> floor_loss(
       make_loss_function(options.loss, options.loss_scale_N));

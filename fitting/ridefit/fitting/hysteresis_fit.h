@@ -58,13 +58,27 @@ struct HysteresisFitResult {
 // an unknown or repeated parameter, a per-file parameter that is not free, bounds with
 // lower >= upper, or a start outside its bounds; RunError when the model cannot be solved at
 // the start.
+// How a record's Jacobian is evaluated: 7 to 12 free values in two halves of Jet lanes on two
+// threads over one recorded run (what fit_hysteresis does), or every value in one pass of Jets
+// (the reference the split is checked against; always so below 7).
+enum class JacobianPasses { kSplitAcrossTwoCores, kOnePass };
+
+struct HysteresisCostOptions {
+  JacobianPasses passes = JacobianPasses::kSplitAcrossTwoCores;
+  // Each run in doubles records its steps, and a Jacobian at the same values replays them
+  // instead of running the record again (what fit_hysteresis does: Ceres asks for the Jacobian
+  // at the trial point it has just accepted).
+  bool keep_steps = false;
+};
+
 // The residual block of one record (force residuals, N) with one parameter block of size 1 per
 // name in `free`, in the parameters' own units: what fit_hysteresis hands to Ceres, exposed for
 // the gradient check. The caller owns it.
 ceres::CostFunction* make_hysteresis_cost(const HysteresisRecord& record,
                                           const model::StrutTestParameters<double>& base,
                                           const std::vector<std::string>& free,
-                                          const simulate::StrutTestSolverOptions& solver = {});
+                                          const simulate::StrutTestSolverOptions& solver = {},
+                                          const HysteresisCostOptions& cost = {});
 
 // Each record's residual weight under `weighting` (RecordWeighting): all 1 for kNewtons; for
 // kRelative the records' RMS spread over the record's own (its force's RMS about its mean).

@@ -44,6 +44,9 @@ struct StrutTestSolverOptions {
   // Run on these steps (another run's history: the discrete map with its step sequence frozen,
   // for checking the tangents by finite differences) instead of choosing them; may be null.
   const EsdirkStepHistory* frozen_steps = nullptr;
+  // A run in doubles records its steps here (may be null), each stage converged as for a replay:
+  // a fit keeps them for the Jacobian at the same point (hysteresis_fit.cc).
+  EsdirkStepHistory* record_steps = nullptr;
 };
 
 // The state a strut test starts from: at rest at the first sample (z_c = x₀, F_f = 0) and, with a
@@ -207,7 +210,9 @@ std::optional<std::vector<T>> strut_test_force(std::span<const double> time_s,
   try {
     if constexpr (std::is_same_v<T, double>) {
       const Trajectory trajectory =
-          integrate_esdirk_or_frozen(system, y0, times, integrator, options.frozen_steps);
+          options.frozen_steps == nullptr
+              ? integrate_esdirk(system, y0, times, integrator, options.record_steps)
+              : integrate_esdirk_on_steps(system, y0, times, integrator, *options.frozen_steps);
       for (std::size_t k = 0; k < n; ++k) {
         force.push_back(model::StrutTest::force_N(trajectory.state_at(k), displacement_m[k],
                                                   x.rate_at(time_s[k]), command_at(time_s[k]),

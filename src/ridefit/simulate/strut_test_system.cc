@@ -2,12 +2,10 @@
 
 #include <ceres/jet.h>
 
-#include <boost/math/interpolators/cubic_hermite.hpp>
 #include <boost/math/interpolators/makima.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 namespace ridefit::simulate {
 
@@ -20,11 +18,7 @@ RigDisplacement::RigDisplacement(std::span<const double> time_s,
   const std::size_t n = time_s_.size();
   if (n < 5 || interpolation == RigInterpolation::kLinear) return;
   if (velocity_m_per_s.size() == n) {
-    auto hermite = std::make_shared<boost::math::interpolators::cubic_hermite<std::vector<double>>>(
-        std::vector<double>(time_s_), std::vector<double>(displacement_m_),
-        std::vector<double>(velocity_m_per_s.begin(), velocity_m_per_s.end()));
-    cubic_m_ = [hermite](double t) { return (*hermite)(t); };
-    cubic_rate_m_per_s_ = [hermite](double t) { return hermite->prime(t); };
+    slope_m_per_s_.assign(velocity_m_per_s.begin(), velocity_m_per_s.end());
     return;
   }
   const double step = (time_s_.back() - time_s_.front()) / static_cast<double>(n - 1);
@@ -38,10 +32,42 @@ RigDisplacement::RigDisplacement(std::span<const double> time_s,
   }
   // Uneven steps: a C1 cubic through the samples. Linear pieces put a kink in the motion at every
   // sample, and a 3 kHz record with rounded time stamps then took more steps than the run allows.
-  auto akima = std::make_shared<boost::math::interpolators::makima<std::vector<double>>>(
-      std::vector<double>(time_s_), std::vector<double>(displacement_m_));
-  cubic_m_ = [akima](double t) { return (*akima)(t); };
-  cubic_rate_m_per_s_ = [akima](double t) { return akima->prime(t); };
+  // Boost's modified Akima gives the slopes (its derivative at each sample is that sample's).
+  const boost::math::interpolators::makima<std::vector<double>> akima{
+      std::vector<double>(time_s_), std::vector<double>(displacement_m_)};
+  slope_m_per_s_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) slope_m_per_s_[k] = akima.prime(time_s_[k]);
+}
+
+std::size_t RigDisplacement::segment_of(double time_s) const {
+  const std::size_t last = time_s_.size() - 2;
+  std::size_t k = std::min(segment_, last);
+  if (time_s >= time_s_[k] && time_s <= time_s_[k + 1]) return k;
+  if (time_s > time_s_[k + 1] && k < last && time_s <= time_s_[k + 2]) return segment_ = k + 1;
+  if (time_s < time_s_[k] && k > 0 && time_s >= time_s_[k - 1]) return segment_ = k - 1;
+  const auto upper = std::upper_bound(time_s_.begin(), time_s_.end(), time_s);
+  const auto index = static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - time_s_.begin(), 1));
+  return segment_ = std::min(index - 1, last);
+}
+
+double RigDisplacement::hermite_m(double time_s) const {
+  const std::size_t k = segment_of(time_s);
+  const double h = time_s_[k + 1] - time_s_[k];
+  const double s = (time_s - time_s_[k]) / h;
+  const double s2 = s * s, s3 = s2 * s;
+  return (2.0 * s3 - 3.0 * s2 + 1.0) * displacement_m_[k] +
+         (s3 - 2.0 * s2 + s) * h * slope_m_per_s_[k] +
+         (3.0 * s2 - 2.0 * s3) * displacement_m_[k + 1] + (s3 - s2) * h * slope_m_per_s_[k + 1];
+}
+
+double RigDisplacement::hermite_rate_m_per_s(double time_s) const {
+  const std::size_t k = segment_of(time_s);
+  const double h = time_s_[k + 1] - time_s_[k];
+  const double s = (time_s - time_s_[k]) / h;
+  const double s2 = s * s;
+  return (6.0 * s2 - 6.0 * s) * (displacement_m_[k] - displacement_m_[k + 1]) / h +
+         (3.0 * s2 - 4.0 * s + 1.0) * slope_m_per_s_[k] +
+         (3.0 * s2 - 2.0 * s) * slope_m_per_s_[k + 1];
 }
 
 double RigDisplacement::at(double time_s) const {
@@ -57,7 +83,7 @@ double RigDisplacement::interpolate(double time_s) const {
   if (spline_) return spline_->value(time_s);
   if (time_s <= time_s_.front()) return displacement_m_.front();
   if (time_s >= time_s_.back()) return displacement_m_.back();
-  if (cubic_m_) return cubic_m_(time_s);
+  if (!slope_m_per_s_.empty()) return hermite_m(time_s);
   const auto upper = std::upper_bound(time_s_.begin(), time_s_.end(), time_s);
   const auto k = static_cast<std::size_t>(upper - time_s_.begin());
   const double w = (time_s - time_s_[k - 1]) / (time_s_[k] - time_s_[k - 1]);
@@ -72,7 +98,7 @@ double RigDisplacement::rate_at(double time_s) const {
   }
   if (spline_) return spline_->derivative(time_s);
   if (time_s < time_s_.front() || time_s > time_s_.back() || time_s_.size() < 2) return 0.0;
-  if (cubic_rate_m_per_s_) return cubic_rate_m_per_s_(time_s);
+  if (!slope_m_per_s_.empty()) return hermite_rate_m_per_s(time_s);
   auto upper = std::upper_bound(time_s_.begin(), time_s_.end(), time_s);
   if (upper == time_s_.end()) --upper;
   const auto k = static_cast<std::size_t>(upper - time_s_.begin());

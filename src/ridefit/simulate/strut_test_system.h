@@ -54,9 +54,16 @@ class RigDisplacement {
   std::vector<double> time_s_;
   std::vector<double> displacement_m_;
   std::optional<road::UniformSpline> spline_;
-  // Non-uniform steps (modified Akima) or a measured velocity (cubic Hermite), and its slope.
-  std::function<double(double)> cubic_m_;
-  std::function<double(double)> cubic_rate_m_per_s_;
+  // Non-uniform steps (modified Akima) or a measured velocity (cubic Hermite): the slope at each
+  // sample; between two samples the curve is the cubic Hermite of their values and slopes.
+  std::vector<double> slope_m_per_s_;
+  // The segment the last time fell in: an integrator asks for nearby times, so the next one is
+  // found in a step or two. Boost's interpolators search the whole record on every call, a sixth
+  // of a fit of a 12 000-sample record with a velocity column.
+  mutable std::size_t segment_ = 0;
+  std::size_t segment_of(double time_s) const;
+  double hermite_m(double time_s) const;
+  double hermite_rate_m_per_s(double time_s) const;
   std::function<double(double)> exact_m_;
 };
 
