@@ -141,10 +141,12 @@ TEST_F(FitCli, AFitThatDoesNotConvergeExits1WithoutAModel) {
 }
 
 // A held top mount 20 % soft on the slow triangle: the pre-sliding rise asks for more stiffness
-// than σ0 in series with it can give, σ0 and d run off until the model cannot be run with
-// derivatives. The stop names the values reached, not Ceres' "Residual and Jacobian evaluation
-// failed" alone.
-TEST_F(FitCli, AFitThatRunsWhereTheModelCannotBeSolvedNamesTheValuesItReached) {
+// than σ0 in series with it can give, and σ0 and d run off. Ceres used to accept a trial point
+// that the plain run could follow but the run recording the steps for the Jacobian (its stages
+// converged tighter) could not, and stopped with "Residual and Jacobian evaluation failed". Every
+// trial point now runs as the Jacobian will (the kept steps, hysteresis_fit.cc), so one that cannot
+// be run is refused as a trial and the fit ends at a point it can run, with its values written.
+TEST_F(FitCli, AHeldValueOffTheTruthEndsTheFitWhereTheModelCanBeRun) {
   const fs::path fitted = dir_ / "fitted.yaml";
   const auto run = run_cli("fit hysteresis " + testing::dataset("lab/triangle_3mm_1mmps.csv") +
                            " --model " + testing::dataset("lab/passat_strut_datasheet.yaml") +
@@ -152,14 +154,10 @@ TEST_F(FitCli, AFitThatRunsWhereTheModelCannotBeSolvedNamesTheValuesItReached) {
                            "dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent,force_offset_N "
                            "--interpolation linear -o " +
                            fitted.string());
-  EXPECT_EQ(run.exit_code, 1) << run.output;
-  EXPECT_NE(run.output.find("could not be run with derivatives near dahl_sigma0_N_per_m = "),
-            std::string::npos)
-      << run.output;
-  EXPECT_NE(run.output.find("dahl_exponent = 5 (its upper bound)"), std::string::npos)
-      << run.output;
-  EXPECT_NE(run.output.find("check the values the fit holds"), std::string::npos) << run.output;
-  EXPECT_FALSE(fs::exists(fitted));
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(run.output.find("could not be run with derivatives"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("evaluation failed"), std::string::npos) << run.output;
+  EXPECT_TRUE(fs::exists(fitted));
 }
 
 }  // namespace

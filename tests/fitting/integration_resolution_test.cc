@@ -122,6 +122,23 @@ TEST(IntegrationResolution, RejectionsStopOnlyWhenTheWholeStepPromisesLittleToo)
   EXPECT_TRUE(stop.reached());
 }
 
+// And, with the number of fitted values known, only if the whole step would move them by less
+// than a fifth of their standard errors: cost 500 over 10000 residuals and 4 values is a residual
+// variance σ̂² = 1000/9996 ≈ 0.1, so the step may promise at most ½·0.04·σ̂² ≈ 0.002. A promise of
+// 0.01 is below the scatter (0.24) but half a standard error of movement: the fit goes on.
+TEST(IntegrationResolution, RejectionsStopOnlyWhenTheWholeStepIsWithinAFifthOfTheErrors) {
+  double promise = 0.01;
+  StopAtIntegrationResolution stop([] { return 0.1; }, 10000, [&] { return promise; }, 4);
+  EXPECT_EQ(stop(iterate(0, 500.0, true)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(1, 500.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(2, 500.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_FALSE(stop.reached());
+  promise = 0.0015;
+  EXPECT_EQ(stop(iterate(3, 500.0, false, -0.04, -0.8)), ceres::SOLVER_CONTINUE);
+  EXPECT_EQ(stop(iterate(4, 500.0, false, -0.04, -0.8)), ceres::SOLVER_TERMINATE_SUCCESSFULLY);
+  EXPECT_TRUE(stop.reached());
+}
+
 TEST(IntegrationResolution, NoFloorNoStop) {
   StopAtIntegrationResolution stop([] { return 0.0; }, 100);  // frozen steps, or a failed run
   EXPECT_EQ(stop(iterate(0, 0.0, true)), ceres::SOLVER_CONTINUE);

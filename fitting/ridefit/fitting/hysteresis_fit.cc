@@ -77,9 +77,8 @@ struct RecordResidual {
   std::vector<double> units;        // block value × unit = the parameter
   simulate::StrutTestSolverOptions solver;
   double weight = 1.0;  // the record's residuals are scaled by this (RecordWeighting)
-  // Keep each run's steps for a Jacobian at the same point (null: run afresh every time). Not
-  // on in fit_hysteresis yet: with it, the resolution stop ended a flat-valley fit 0.9 SE from
-  // where Ceres ends (ResolutionStop.EndsAlongAFlatValleyWhereCeresWould asks 0.2 SE).
+  // Keep each run's steps for a Jacobian at the same point (null: run afresh every time): the
+  // Jacobian is then the exact tangent of the run whose residuals Ceres accepted.
   std::shared_ptr<KeptSteps> kept;
 
   template <typename T>
@@ -564,7 +563,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     }
   };
   ceres::Problem problem;
-  add_records(problem, options.solver, false);
+  add_records(problem, options.solver, true);
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     problem.SetParameterLowerBound(&values[b], 0, bounds[blocks[b].parameter].first / units[b]);
     problem.SetParameterUpperBound(&values[b], 0, bounds[blocks[b].parameter].second / units[b]);
@@ -595,7 +594,7 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
   ceres::Problem at_tolerance, at_coarser;
   simulate::StrutTestSolverOptions coarser = options.solver;
   coarser.relative_tolerance = coarser_tolerance(coarser.relative_tolerance);
-  add_records(at_tolerance, options.solver, false);
+  add_records(at_tolerance, options.solver, true);
   add_records(at_coarser, coarser, false);
   // The scatter under the same robust loss as the cost it is compared with, of the raw residuals.
   const std::unique_ptr<ceres::LossFunction> floor_loss(
@@ -634,7 +633,8 @@ HysteresisFitResult fit_hysteresis(const std::vector<HysteresisRecord>& records,
     const double decrease = -0.5 * g.dot(step);
     return std::isfinite(decrease) ? decrease : std::numeric_limits<double>::infinity();
   };
-  StopAtIntegrationResolution stop(measure_floor, initial_residuals.size(), gauss_newton_decrease);
+  StopAtIntegrationResolution stop(measure_floor, initial_residuals.size(), gauss_newton_decrease,
+                                   blocks.size());
   solver.update_state_every_iteration = true;
   if (options.stop_at_integration_resolution) solver.callbacks.push_back(&stop);
   solver.logging_type = ceres::SILENT;

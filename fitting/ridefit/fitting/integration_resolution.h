@@ -4,9 +4,11 @@
 #include <ceres/loss_function.h>
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <span>
 #include <string>
 #include <utility>
@@ -34,7 +36,11 @@ namespace ridefit::fitting {
 //    steps (noisy records at their optimum). One such rejection is not enough: partway along a
 //    flat valley the trust region may have shrunk to a step the scatter refuses, and the shorter
 //    step after it is then accepted and the fit goes on. Where the fit can say what the whole
-//    Gauss-Newton step promises (the gradient condition), that must be below the scatter too.
+//    Gauss-Newton step promises (the gradient condition), that must be below the scatter too,
+//    and, where it says how many values it fits, below what would move them by a fifth of their
+//    standard errors: ½gᵀ(JᵀJ)⁻¹g < ½(0.2)²σ̂², σ̂² = 2·cost/(N − p). The scatter bounds what the
+//    integration resolves in the cost; this bounds what the stop may leave of the parameters
+//    (a noisy record's cost is flat to within the scatter across several standard errors).
 // Far from the optimum the predicted decreases are orders of magnitude above that, so neither
 // ends a fit early; Ceres' own tolerances still apply. Needs
 // Solver::Options::update_state_every_iteration, so the parameter blocks hold the iterate.
@@ -67,11 +73,14 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
   // computed). The rejected-step condition ends a fit only when that promise too is below the
   // scatter: a trust region shrunk partway along a flat valley promises little for its own short
   // step while the whole step towards the valley's floor promises more.
+  // `free_count` (0: not known): the values fitted, for the standard-error condition.
   StopAtIntegrationResolution(std::function<double()> measure_floor, std::size_t residual_count,
-                              std::function<double()> gauss_newton_decrease = {})
+                              std::function<double()> gauss_newton_decrease = {},
+                              std::size_t free_count = 0)
       : measure_(std::move(measure_floor)),
         gauss_newton_(std::move(gauss_newton_decrease)),
-        count_(static_cast<double>(residual_count > 0 ? residual_count : 1)) {}
+        count_(static_cast<double>(residual_count > 0 ? residual_count : 1)),
+        free_(static_cast<double>(free_count)) {}
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
     if (summary.iteration == 0 || summary.step_is_successful) ++iterate_;
@@ -89,7 +98,7 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
     }
     if (!summary.step_is_successful && summary.iteration > 0) {
       if (++refused_in_a_row_ < 2) return ceres::SOLVER_CONTINUE;
-      if (gauss_newton_ && !(gauss_newton_() < scatter_)) {
+      if (gauss_newton_ && !(gauss_newton_() < std::min(scatter_, resolved(summary.cost)))) {
         refused_in_a_row_ = 0;
         return ceres::SOLVER_CONTINUE;
       }
@@ -102,6 +111,14 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
   double floor() const { return floor_; }
 
  private:
+  // The decrease of a step that moves the values by a fifth of their standard errors.
+  double resolved(double cost) const {
+    if (!(free_ > 0.0) || !(count_ > free_)) return std::numeric_limits<double>::infinity();
+    constexpr double kFractionOfStandardError = 0.2;
+    const double variance = 2.0 * std::abs(cost) / (count_ - free_);
+    return 0.5 * kFractionOfStandardError * kFractionOfStandardError * variance;
+  }
+
   void measure_here() {
     floor_ = measure_();
     measured_at_ = iterate_;
@@ -129,6 +146,7 @@ class StopAtIntegrationResolution final : public ceres::IterationCallback {
   std::function<double()> measure_;
   std::function<double()> gauss_newton_;
   double count_;
+  double free_;           // values fitted (0: not known)
   double scatter_ = 0.0;  // the cost's scatter at the last rejected step
   double floor_ = 0.0;
   long iterate_ = 0;          // accepted iterates so far (the start is the first)
