@@ -36,6 +36,7 @@ StrutParameters<double> every_effect() {
   s.stribeck_velocity_m_per_s = 0.01;
   s.friction_compression_to_rebound_ratio = 0.8;
   s.free_play_m = 1e-3;
+  s.free_play_damping_Ns_per_m = 5000.0;
   return s;
 }
 
@@ -114,8 +115,10 @@ TEST(OneStrut, AHalfCarFileTakesEveryStrutKeyWithTheQuarterCarsRules) {
   const auto file = io::load_half_car(path, {{"front.suspension", "strut"},
                                              {"front.free_play_m", "0.002"},
                                              {"front.friction_compression_to_rebound_ratio", "0.9"},
-                                             {"front.command_exponent", "0.5"}});
+                                             {"front.command_exponent", "0.5"},
+                                             {"front.free_play_damping_Ns_per_m", "3000"}});
   EXPECT_EQ(file.parameters.front.free_play_m, 0.002);
+  EXPECT_EQ(file.parameters.front.free_play_damping_Ns_per_m, 3000.0);
   EXPECT_EQ(file.parameters.front.friction_compression_to_rebound_ratio, 0.9);
   EXPECT_EQ(file.parameters.front.command_exponent, 0.5);
   EXPECT_EQ(file.parameters.rear.free_play_m, 0.0);
@@ -137,6 +140,17 @@ TEST(OneStrut, AHalfCarFileTakesEveryStrutKeyWithTheQuarterCarsRules) {
   const auto error = validate(edited, file.topology);
   ASSERT_TRUE(error.has_value());
   EXPECT_EQ(error->key, "rear.damper_knee_velocity_m_per_s");
+  // A free play's damping without free play: named with its axle, in the file and in memory.
+  const std::string play = testing::input_error_message([&] {
+    io::load_half_car(path, {{"rear.free_play_damping_Ns_per_m", "3000"}});
+  });
+  EXPECT_NE(play.find("rear.free_play_damping_Ns_per_m"), std::string::npos) << play;
+  EXPECT_NE(play.find("free_play_m"), std::string::npos) << play;
+  auto damped = file.parameters;
+  damped.rear.free_play_damping_Ns_per_m = 3000.0;
+  const auto damped_error = validate(damped, file.topology);
+  ASSERT_TRUE(damped_error.has_value());
+  EXPECT_EQ(damped_error->key, "rear.free_play_damping_Ns_per_m");
 }
 
 }  // namespace

@@ -109,7 +109,8 @@ TEST(ParameterTable, EachNamedRowIsTheRowOfItsKey) {
        {&quarter_car_rows::friction_compression_to_rebound_ratio,
         "friction_compression_to_rebound_ratio"},
        {&quarter_car_rows::free_play_m, "free_play_m"},
-       {&quarter_car_rows::command_exponent, "command_exponent"}});
+       {&quarter_car_rows::command_exponent, "command_exponent"},
+       {&quarter_car_rows::free_play_damping_Ns_per_m, "free_play_damping_Ns_per_m"}});
   expect_named(kHalfCarBodyParameters,
                {{&half_car_body_rows::body_mass_kg, "body_mass_kg"},
                 {&half_car_body_rows::pitch_inertia_kg_m2, "pitch_inertia_kg_m2"},

@@ -37,7 +37,8 @@ constexpr std::string_view kOptionalAxleKeys[] = {
     axle_rows::command_lag_s.key,
     axle_rows::command_exponent.key,
     axle_rows::friction_compression_to_rebound_ratio.key,
-    axle_rows::free_play_m.key};
+    axle_rows::free_play_m.key,
+    axle_rows::free_play_damping_Ns_per_m.key};
 
 std::pair<model::AxleTopology, model::HalfCarAxle<double>> read_axle(const YamlMap& axle) {
   model::AxleTopology topology;

@@ -41,7 +41,8 @@ namespace ridefit::io {
 //     command_lag_s: 0.015                  # τ, in [0, 1]
 //     # Every other optional effect of the strut's damper path, with the quarter car's keys and
 //     # rules (quarter_car_file.h: top-mount stiffening, blow-off knee, Stribeck level,
-//     # friction_compression_to_rebound_ratio, free_play_m, command_exponent). The top mount,
+//     # friction_compression_to_rebound_ratio, free_play_m, free_play_damping_Ns_per_m,
+//     # command_exponent). The top mount,
 //     # friction and free play act on a strut axle only; a passive axle's damper keeps its knee.
 //   seat:       {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …}
 //   lower_body: {mass_kg: …, stiffness_N_per_m: …, damping_Ns_per_m: …}

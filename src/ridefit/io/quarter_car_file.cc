@@ -129,6 +129,16 @@ void read_strut_effects(const YamlMap& file, model::StrutParameters<double>& p) 
         file.parameter(rows::friction_compression_to_rebound_ratio);
   }
   if (file.has(rows::free_play_m)) p.free_play_m = file.parameter(rows::free_play_m);
+  // The play's damping (default 0, a dry play) acts only while its slack is crossed.
+  if (file.has(rows::free_play_damping_Ns_per_m)) {
+    p.free_play_damping_Ns_per_m = file.parameter(rows::free_play_damping_Ns_per_m);
+    if (p.free_play_damping_Ns_per_m > 0.0 && !(p.free_play_m > 0.0)) {
+      throw InputError(fmt::format(
+          "{} is {} N*s/m but the model has no free play: give free_play_m > 0 as well (the "
+          "damping acts while the play's slack is crossed), or leave the damping out",
+          file.locate(rows::free_play_damping_Ns_per_m), p.free_play_damping_Ns_per_m));
+    }
+  }
   // 6. Controlled damper: each key optional (0 = off).
   if (file.has(rows::damping_per_command_Ns_per_m)) {
     p.damping_per_command_Ns_per_m = file.parameter(rows::damping_per_command_Ns_per_m);

@@ -56,6 +56,11 @@ namespace ridefit::io {
 //   damping_per_command_Ns_per_m: 2000     # c_b per A or V, in [-1e5, 1e6]
 //   coulomb_force_per_command_N: 200       # Fc_b per A or V, in [-1e4, 1e4]
 //   command_lag_s: 0.01                    # τ, in [0, 1]; 0 = ū follows u at once
+//   command_exponent: 1.2                  # p: levels affine in ū^p, in (0, 10], default 1
+//   # Dry-friction devices and slack, dahl_friction.h, free_play.h, strut_damper_path.h:
+//   friction_compression_to_rebound_ratio: 0.85   # Dahl level in compression over rebound
+//   free_play_m: 0.0002                    # b, total width of the slack, in [0, 1]; 0 = none
+//   free_play_damping_Ns_per_m: 60000      # c_p while the slack is crossed; needs free_play_m
 //
 // Optional measuring chain of the accelerometers (acceleration_sensors.h): not physics, what the
 // spectral comparisons (fit psd, diagnose) apply to the simulated PSDs, g²·|H(f)|²·P_sim.

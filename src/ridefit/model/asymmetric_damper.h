@@ -59,20 +59,31 @@ struct AsymmetricDamper {
   // The rate at which the damper carries `force_N`: the inverse of force_N. Every branch has a
   // slope > 0, so the force and the rate have the same sign and the branch can be chosen from
   // the force: the inverse is explicit.
-  T rate_m_per_s(const T& force) const {
+  //
+  // With `parallel_Ns_per_m` c_q > 0 it is the rate u at which the damper and a dashpot c_q
+  // moving with it carry `force` together, force_N(u) + c_q·u = force: every slope grows by c_q
+  // and the knees' forces by c_q·v_k, so the branch still follows from the force (a free play's
+  // damping, which resists the damper's rate as well as the rig's; strut_damper_path.h). c_q = 0
+  // is the plain inverse, bit for bit (0 is added to each slope and knee force).
+  T rate_m_per_s(const T& force, const T& parallel_Ns_per_m = T(0.0)) const {
+    const T& c_q = parallel_Ns_per_m;
     if (has_knee()) {
       const T knee_force = rebound_damping_Ns_per_m * knee_velocity_m_per_s;
-      if (force > knee_force) {
-        return knee_velocity_m_per_s + (force - knee_force) / damping_above_knee_Ns_per_m;
+      const T rebound_knee = knee_force + c_q * knee_velocity_m_per_s;
+      if (force > rebound_knee) {
+        return knee_velocity_m_per_s + (force - rebound_knee) / (damping_above_knee_Ns_per_m + c_q);
       }
-      if (force < -compression_to_rebound_ratio * knee_force) {
+      const T compression_knee =
+          compression_to_rebound_ratio * knee_force + c_q * knee_velocity_m_per_s;
+      if (force < -compression_knee) {
         return -knee_velocity_m_per_s +
-               (force + compression_to_rebound_ratio * knee_force) /
-                   (compression_to_rebound_ratio * damping_above_knee_Ns_per_m);
+               (force + compression_knee) /
+                   (compression_to_rebound_ratio * damping_above_knee_Ns_per_m + c_q);
       }
     }
-    return force / (force < T(0.0) ? compression_to_rebound_ratio * rebound_damping_Ns_per_m
-                                   : rebound_damping_Ns_per_m);
+    return force / ((force < T(0.0) ? compression_to_rebound_ratio * rebound_damping_Ns_per_m
+                                    : rebound_damping_Ns_per_m) +
+                    c_q);
   }
   bool symmetric() const { return compression_to_rebound_ratio == T(1.0); }
   // F proportional to v: symmetric, and without a knee or with one that keeps the slope.

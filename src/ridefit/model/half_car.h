@@ -278,20 +278,22 @@ HalfCar::AxleForces<T> HalfCar::axle_forces(
     f.damping_Ns_per_m = damper.rebound_damping_Ns_per_m;
     switch (topology.damper_state) {
       case DamperState::kStick:
-        path = strut.path_force_N(travel, T(0.0));
+        path = strut.stuck_force_N(travel, travel_rate);
         f.damper_N = path;  // the locked damper carries the whole path force
         break;
       case DamperState::kSlip: {
-        path = strut.path_force_N(travel, internal[0]);
-        const T damper_rate = strut.damper_rate_m_per_s(path, T(0.0));
+        const auto flow = strut.flow(travel, travel_rate, internal[0], T(0.0));
+        path = flow.force_N;
+        const T damper_rate = flow.damper_rate_m_per_s;
         internal_rate[0] = damper_rate;
         f.damper_N = path;
         f.damping_Ns_per_m = damper.damping_Ns_per_m(damper_rate);
         break;
       }
       case DamperState::kStickSlip: {
-        path = strut.path_force_N(travel, internal[0]);
-        const T damper_rate = strut.damper_rate_m_per_s(path, internal[1]);
+        const auto flow = strut.flow(travel, travel_rate, internal[0], internal[1]);
+        path = flow.force_N;
+        const T damper_rate = flow.damper_rate_m_per_s;
         internal_rate[0] = damper_rate;
         internal_rate[1] = strut.friction.force_rate_N_per_s(internal[1], damper_rate);
         f.damper_N = path - internal[1];

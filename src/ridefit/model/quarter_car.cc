@@ -80,8 +80,8 @@ QuarterCarOutputs QuarterCar::outputs(const double* x, const road::RoadSample& r
       break;
     case DamperState::kStick:
       out.stuck = 1.0;
-      // The locked damper carries the whole damper-path force.
-      out.friction_force_N = path.top_mount.force_N(out.top_mount_deflection_m);
+      // The locked damper carries the whole damper-path force (its free play's too).
+      out.friction_force_N = path.stuck_force_N(out.travel_m, x[2] - x[3]);
       break;
     case DamperState::kStickSlip:
       out.friction_force_N = x[5];

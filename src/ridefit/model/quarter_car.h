@@ -174,20 +174,23 @@ class QuarterCar {
       command = T(road.command);
     }
     const StrutDamperPath<T> path = p.damper_path(command);
+    const T travel_rate = vs - vu;
     T path_force(0.0);
     switch (state_) {
       case DamperState::kStick:
-        path_force = path.path_force_N(travel, T(0.0));
+        path_force = path.stuck_force_N(travel, travel_rate);
         break;
-      case DamperState::kSlip:
-        path_force = path.path_force_N(travel, x[4]);
-        xdot[4] = path.damper_rate_m_per_s(path_force, T(0.0));
+      case DamperState::kSlip: {
+        const auto flow = path.flow(travel, travel_rate, x[4], T(0.0));
+        path_force = flow.force_N;
+        xdot[4] = flow.damper_rate_m_per_s;
         break;
+      }
       case DamperState::kStickSlip: {
-        path_force = path.path_force_N(travel, x[4]);
-        const T damper_rate = path.damper_rate_m_per_s(path_force, x[5]);
-        xdot[4] = damper_rate;
-        xdot[5] = path.friction.force_rate_N_per_s(x[5], damper_rate);
+        const auto flow = path.flow(travel, travel_rate, x[4], x[5]);
+        path_force = flow.force_N;
+        xdot[4] = flow.damper_rate_m_per_s;
+        xdot[5] = path.friction.force_rate_N_per_s(x[5], flow.damper_rate_m_per_s);
         break;
       }
     }

@@ -55,6 +55,12 @@ std::optional<ParameterError> validate_strut(const StrutParameters<double>& p,
                     p.damping_above_knee_Ns_per_m, p.damping_Ns_per_m,
                     key(rows::damping_Ns_per_m))};
   }
+  if (p.free_play_damping_Ns_per_m > 0.0 && !(p.free_play_m > 0.0)) {
+    return ParameterError{key(rows::free_play_damping_Ns_per_m),
+                          fmt::format("needs free play: '{}' > 0 (it is {}); the damping acts "
+                                      "while the play's slack is crossed",
+                                      key(rows::free_play_m), p.free_play_m)};
+  }
   if (p.stribeck_velocity_m_per_s > 0.0) {
     if (!(p.coulomb_force_N > 0.0)) {
       return ParameterError{key(rows::stribeck_velocity_m_per_s),

@@ -16,7 +16,7 @@ namespace ridefit::model {
 // the keys they share. tyre_lift_off and acc_sensor_order are switches, not parameters, and are
 // not listed; neither is the damper state (the topology). The last three rows are the
 // accelerometers' measuring chain (acceleration_sensors.h), not physics.
-inline constexpr std::array<ParameterInfo, 30> kQuarterCarParameters{{
+inline constexpr std::array<ParameterInfo, 31> kQuarterCarParameters{{
     {"sprung_mass_kg", "kg", 0.0, 1e5, true, false, "body mass carried by the corner"},
     {"unsprung_mass_kg", "kg", 0.0, 1e5, true, false, "wheel, hub, brake and strut body"},
     {"tyre_stiffness_N_per_m", "N/m", 0.0, 1e10, true, false, "tyre vertical stiffness"},
@@ -66,6 +66,8 @@ inline constexpr std::array<ParameterInfo, 30> kQuarterCarParameters{{
      "free play (backlash) in series with the damper path, total width; 0 = none"},
     {"command_exponent", "1", 0.0, 10.0, true, false,
      "controlled damper: levels affine in the command to this power (default 1)"},
+    {"free_play_damping_Ns_per_m", "N*s/m", 0.0, 1e7, false, false,
+     "free play's damping while its slack is crossed (needs free_play_m); 0 = a dry play"},
 }};
 
 // Each row by name, for code that means one parameter: quarter_car_rows::coulomb_force_N is the
@@ -105,6 +107,7 @@ inline constexpr const ParameterInfo& friction_compression_to_rebound_ratio =
     kQuarterCarParameters[27];
 inline constexpr const ParameterInfo& free_play_m = kQuarterCarParameters[28];
 inline constexpr const ParameterInfo& command_exponent = kQuarterCarParameters[29];
+inline constexpr const ParameterInfo& free_play_damping_Ns_per_m = kQuarterCarParameters[30];
 }  // namespace quarter_car_rows
 
 // Index of `key` in kQuarterCarParameters, or none.
@@ -152,7 +155,8 @@ T& quarter_car_parameter(QuarterCarParameters<T>& p, std::size_t index) {
                        &p.sensors.acc_sensor_cutoff_Hz,
                        &p.friction_compression_to_rebound_ratio,
                        &p.free_play_m,
-                       &p.command_exponent};
+                       &p.command_exponent,
+                       &p.free_play_damping_Ns_per_m};
   static_assert(sizeof(fields) / sizeof(fields[0]) == kQuarterCarParameters.size());
   return *fields[index];
 }
@@ -164,7 +168,7 @@ const T& quarter_car_parameter(const QuarterCarParameters<T>& p, std::size_t ind
 
 // The strut's rows (StrutParameters), in its fields' order: the damper path's parameters that
 // the quarter car, each half-car axle and the rig share.
-inline constexpr std::array<std::size_t, 18> kStrutRows{
+inline constexpr std::array<std::size_t, 19> kStrutRows{
     quarter_car_row_index(quarter_car_rows::top_mount_stiffness_N_per_m),
     quarter_car_row_index(quarter_car_rows::damping_Ns_per_m),
     quarter_car_row_index(quarter_car_rows::dahl_sigma0_N_per_m),
@@ -179,6 +183,7 @@ inline constexpr std::array<std::size_t, 18> kStrutRows{
     quarter_car_row_index(quarter_car_rows::stribeck_velocity_m_per_s),
     quarter_car_row_index(quarter_car_rows::friction_compression_to_rebound_ratio),
     quarter_car_row_index(quarter_car_rows::free_play_m),
+    quarter_car_row_index(quarter_car_rows::free_play_damping_Ns_per_m),
     quarter_car_row_index(quarter_car_rows::damping_per_command_Ns_per_m),
     quarter_car_row_index(quarter_car_rows::coulomb_force_per_command_N),
     quarter_car_row_index(quarter_car_rows::command_lag_s),
@@ -202,6 +207,7 @@ T& strut_field(StrutParameters<T>& s, std::size_t i) {
                        &s.stribeck_velocity_m_per_s,
                        &s.friction_compression_to_rebound_ratio,
                        &s.free_play_m,
+                       &s.free_play_damping_Ns_per_m,
                        &s.damping_per_command_Ns_per_m,
                        &s.coulomb_force_per_command_N,
                        &s.command_lag_s,
@@ -219,7 +225,8 @@ constexpr std::optional<std::size_t> strut_row(const ParameterInfo& row) {
 }
 
 // The strut's ranges and rules (the effects' keys together or not at all, k_s >= k_l,
-// c_h <= c_r, Fs >= Fc, Stribeck only with Dahl friction); each key named with `prefix` ("front."
+// c_h <= c_r, Fs >= Fc, Stribeck only with Dahl friction, a free play's damping only with free
+// play); each key named with `prefix` ("front."
 // for a half-car axle). `passive_damper` allows damping_Ns_per_m = 0 (a passive half-car axle's
 // damper; a strut's rate divides by it).
 std::optional<ParameterError> validate_strut(const StrutParameters<double>& p,

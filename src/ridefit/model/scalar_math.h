@@ -29,9 +29,12 @@ T signed_power(const T& s, const E& d) {
   using std::exp;
   using std::log;
   if (s == 0.0) return d == 1.0 ? s : T(0.0);
-  // The common d = 1 without exp and log, when d carries no derivative.
+  // The common d = 1 without exp and log, when d carries no derivative (a double, or a Jet of
+  // an exponent the fit holds: the Dahl shape of every MR fit, evaluated at each stage).
   if constexpr (std::is_same_v<E, double>) {
     if (d == 1.0) return s;
+  } else if constexpr (requires { d.v.isZero(); }) {  // ceres::Jet
+    if (d == 1.0 && d.v.isZero()) return s;
   }
   const T magnitude = exp(d * log(abs(s)));
   return s < 0.0 ? T(-magnitude) : magnitude;

@@ -36,13 +36,25 @@ enum class DamperState {
 //
 // The path may have free play (free_play.h) in series: the top mount then deflects by
 // D(z − z_c), the dead zone of the path's deflection, and carries no force while the slack is
-// crossed.
+// crossed. The slack may resist being crossed (free_play_damping_Ns_per_m c_p: a clevis or
+// joint whose gap is filled with oil or grease, a fluid column that must flow before the
+// damper's piston bears): a dashpot across the play that acts while it is open,
+// c_q = c_p·(1 − D'(δ)), δ = z − z_c, so that
+//
+//   F_path = F_tm(D(δ)) + c_q·(z' − z_c') = c(z_c')·z_c' + F_f
+//
+// and z_c' = damper.rate_m_per_s(F_tm + c_q·z' − F_f, c_q), still explicit. Inside the slack
+// the path then carries the damper and c_p in series (c·c_p/(c + c_p)·z' for a linear damper),
+// the velocity-dependent plateau after each reversal that an MR damper on a press shows; once
+// the play is taken up (D' = 1) c_q is 0 and the path is as without it. c_p = 0 (the default)
+// is a dry play, bit for bit.
 template <typename T>
 struct StrutDamperPath {
   AmplitudeStiffeningSpring<T> top_mount;
   AsymmetricDamper<T> damper;
   DahlFriction<T> friction;
-  T free_play_m{0.0};  // b; 0 = none
+  T free_play_m{0.0};                 // b; 0 = none
+  T free_play_damping_Ns_per_m{0.0};  // c_p, read only when b > 0
 
   // Internal states this path adds to a model.
   static int state_count(DamperState state) {
@@ -65,6 +77,37 @@ struct StrutDamperPath {
   // Damper deflection rate z_c' for a given path force and friction force.
   T damper_rate_m_per_s(const T& path_force_N, const T& friction_force_N) const {
     return damper.rate_m_per_s(path_force_N - friction_force_N);
+  }
+
+  // c_q: the free play's damping at the path's deflection δ (0 without it, and once the play
+  // is taken up).
+  T slack_damping_Ns_per_m(const T& deflection_m) const {
+    if (!(free_play_m > 0.0) || !(free_play_damping_Ns_per_m > 0.0)) return T(0.0);
+    return free_play_damping_Ns_per_m * (T(1.0) - free_play_slope(deflection_m, free_play_m));
+  }
+
+  // The path's force and the damper's rate z_c' at travel z, travel rate z', damper deflection
+  // z_c and friction force F_f (0 for a path without friction), as above.
+  struct Flow {
+    T force_N;
+    T damper_rate_m_per_s;
+  };
+  Flow flow(const T& travel_m, const T& travel_rate_m_per_s, const T& damper_deflection_m,
+            const T& friction_force_N) const {
+    const T deflection = travel_m - damper_deflection_m;
+    const T spring = top_mount.force_N(free_play_deflection_m(deflection, free_play_m));
+    const T c_q = slack_damping_Ns_per_m(deflection);
+    if (!(c_q > 0.0)) return {spring, damper.rate_m_per_s(spring - friction_force_N)};
+    const T rate = damper.rate_m_per_s(spring + c_q * travel_rate_m_per_s - friction_force_N, c_q);
+    return {spring + c_q * (travel_rate_m_per_s - rate), rate};
+  }
+
+  // The force of a locked damper's path (z_c ≡ 0): the top mount, and the slack's damping at
+  // the travel rate.
+  T stuck_force_N(const T& travel_m, const T& travel_rate_m_per_s) const {
+    const T spring = top_mount.force_N(free_play_deflection_m(travel_m, free_play_m));
+    const T c_q = slack_damping_Ns_per_m(travel_m);
+    return c_q > 0.0 ? T(spring + c_q * travel_rate_m_per_s) : spring;
   }
 };
 

@@ -37,6 +37,8 @@ struct StrutParameters {
   // 1 symmetric) and free play in series with the path (free_play.h; 0 none).
   T friction_compression_to_rebound_ratio{1.0};
   T free_play_m{0.0};
+  // The free play's resistance while its slack is crossed (strut_damper_path.h; 0 a dry play).
+  T free_play_damping_Ns_per_m{0.0};
   // A controlled (semi-active) damper: damping and friction level affine in the shaped, lagged
   // command (commanded_levels): c(ū) = c + c_b·ū^p, Fc(ū) = Fc + Fc_b·ū^p, dū/dt = (u − ū)/τ.
   // The slopes are per unit of the command's SI unit (A or V); both 0 is a passive damper.
@@ -73,7 +75,8 @@ struct StrutParameters {
         {c, compression_to_rebound_ratio, damper_knee_velocity_m_per_s, above_knee},
         {dahl_sigma0_N_per_m, fc, dahl_exponent, static_friction_force_N + (fc - coulomb_force_N),
          stribeck_velocity_m_per_s, friction_compression_to_rebound_ratio},
-        free_play_m};
+        free_play_m,
+        free_play_damping_Ns_per_m};
   }
 
   // The strut part of a model (a slice of QuarterCarParameters, HalfCarAxle, StrutTestParameters).
@@ -98,6 +101,7 @@ struct StrutParameters {
     s.stribeck_velocity_m_per_s = U(stribeck_velocity_m_per_s);
     s.friction_compression_to_rebound_ratio = U(friction_compression_to_rebound_ratio);
     s.free_play_m = U(free_play_m);
+    s.free_play_damping_Ns_per_m = U(free_play_damping_Ns_per_m);
     s.damping_per_command_Ns_per_m = U(damping_per_command_Ns_per_m);
     s.coulomb_force_per_command_N = U(coulomb_force_per_command_N);
     s.command_lag_s = U(command_lag_s);

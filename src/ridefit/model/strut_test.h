@@ -94,6 +94,9 @@ inline constexpr double kQuasiStaticRecovery_s = 1e-4;
 //   z_c' = (k·x' + (F_tm − F_f)/τ) / (k + σ0·s + c/τ),
 // the same rate as above while R = 0, and inside the slack (k = 0, F_tm = 0) a friction force
 // left from before the reversal unloads, as the real element does, instead of staying frozen.
+// A damped free play (free_play_damping_Ns_per_m c_p) adds c_q·(x' − z_c') to F_tm in R,
+// c_q = c_p·(1 − D'), so c becomes c + c_q and F_tm becomes F_tm + c_q·x' above: inside the
+// slack the damper and c_q then carry the rig's motion in series.
 //
 // A controlled damper (StrutTestParameters::commanded) reads the command u(t) and, with a lag
 // τ > 0, carries the filtered command ū as a third state: y = [z_c, F_f, ū], ū' = (u − ū)/τ.
@@ -124,8 +127,9 @@ struct StrutTest {
     PathState<T> out{p.damper_path(lagged ? y[2] : command), T(0.0), T(0.0)};
     const auto& path = out.path;
     if (!quasi_static(p)) {
-      out.force_N = path.path_force_N(x, y[0]);
-      out.rate_m_per_s = path.damper_rate_m_per_s(out.force_N, y[1]);
+      const auto flow = path.flow(x, x_rate, y[0], y[1]);
+      out.force_N = flow.force_N;
+      out.rate_m_per_s = flow.damper_rate_m_per_s;
       return out;
     }
     const T delta = x - y[0];
@@ -138,12 +142,19 @@ struct StrutTest {
     // force at its sliding level for the rest of the run (a 9 kN force with nothing loading it).
     // Without free play nothing here reads z_c (k is k_tm): no equilibrium to keep, and z_c is a
     // passenger the error control leaves alone (StrutTestSystem::typical_magnitude).
+    // The free play's damping c_q (strut_damper_path.h) joins the residual, R = F_tm +
+    // c_q·(x' − z_c') − F_f − c·z_c', and so both the drive and the damper's share.
     const bool slack = p.free_play_m > 0.0;
-    const T c_over_tau =
-        slack ? T(path.damper.rebound_damping_Ns_per_m / kQuasiStaticRecovery_s) : T(0.0);
+    const T c_q = path.slack_damping_Ns_per_m(delta);
+    const bool damped = c_q > 0.0;
+    const T c_over_tau = slack ? T((damped ? T(path.damper.rebound_damping_Ns_per_m + c_q)
+                                           : path.damper.rebound_damping_Ns_per_m) /
+                                   kQuasiStaticRecovery_s)
+                               : T(0.0);
+    const T slack_force =
+        damped ? T(path.path_force_N(x, y[0]) + c_q * x_rate) : path.path_force_N(x, y[0]);
     const T drive =
-        k * x_rate +
-        (slack ? T((path.path_force_N(x, y[0]) - y[1]) / kQuasiStaticRecovery_s) : T(0.0));
+        k * x_rate + (slack ? T((slack_force - y[1]) / kQuasiStaticRecovery_s) : T(0.0));
     T share = T(0.0);  // σ0·s: how much of the motion the friction element resists, s in 0..1+
     if (path.friction.active()) {
       // The level at the rate the path would take while sliding (s = 0): Stribeck's curve and the

@@ -515,9 +515,10 @@ Trajectory run_esdirk(const OdeSystem& system, const std::vector<double>& x0,
     history->state_size = n;
   }
   if (output_times_s.size() == 1) return trajectory;
-  // Fixed sizes for the strut (2), the quarter car (4–6) and the half car (14–18).
-  const bool fixed = run_fixed<2, 4, 5, 6, 14, 15, 16, 17, 18>(n, system, output_times_s, options,
-                                                               trajectory, history, frozen);
+  // Fixed sizes for the strut (2, 3 with a lagged command), the quarter car (4–6) and the half
+  // car (14–18).
+  const bool fixed = run_fixed<2, 3, 4, 5, 6, 14, 15, 16, 17, 18>(
+      n, system, output_times_s, options, trajectory, history, frozen);
   if (!fixed) {
     run_with<Eigen::Dynamic>(system, output_times_s, options, trajectory, history, frozen);
   }

@@ -114,13 +114,13 @@ bool replay_dispatch(std::integer_sequence<int, Sizes...>, const EsdirkStepHisto
 
 }  // namespace esdirk_detail
 
-// MaxN: the largest state size the caller's system has (fixed-size code for 2 and 4–7 states).
+// MaxN: the largest state size the caller's system has (fixed-size code for 2–7 states).
 template <typename T, int MaxN = 24, typename Rhs, typename Output>
 bool replay_esdirk(const EsdirkStepHistory& history, const OdeSystem& system, std::span<const T> y0,
                    std::span<const double> output_times_s, Rhs&& rhs, Output&& output) {
   if (history.state_size > MaxN) return false;
   if constexpr (MaxN <= 7) {
-    return esdirk_detail::replay_dispatch<T, MaxN>(std::integer_sequence<int, 2, 4, 5, 6, 7>{},
+    return esdirk_detail::replay_dispatch<T, MaxN>(std::integer_sequence<int, 2, 3, 4, 5, 6, 7>{},
                                                    history, system, y0, output_times_s, rhs,
                                                    output);
   } else {

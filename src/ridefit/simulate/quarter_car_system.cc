@@ -50,7 +50,7 @@ void QuarterCarSystem::switching(double t_s, const double* x, double* g) const {
   double rate = 0.0;
   if (car_.damper_state() != model::DamperState::kStick) {
     const double friction = car_.damper_state() == model::DamperState::kStickSlip ? x[5] : 0.0;
-    rate = path.damper_rate_m_per_s(path.path_force_N(travel, x[4]), friction);
+    rate = path.flow(travel, x[2] - x[3], x[4], friction).damper_rate_m_per_s;
   }
   for (std::size_t j = 0; j < switches_.size(); ++j) {
     switch (switches_[j]) {
