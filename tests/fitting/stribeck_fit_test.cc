@@ -29,7 +29,7 @@ HysteresisRecord dynamic(const model::StrutTestParameters<double>& p) {
 }
 
 TEST(StribeckFit, TheNewParametersAreFittableByName) {
-  EXPECT_EQ(kStrutParameters.size(), 26u);
+  EXPECT_EQ(kStrutParameters.size(), 27u);
   const std::size_t fs = strut_parameter_index("static_friction_force_N");
   const std::size_t vs = strut_parameter_index("stribeck_velocity_m_per_s");
   auto p = truth();

@@ -30,6 +30,7 @@ StrutParameters<double> every_effect() {
   s.compression_to_rebound_ratio = 0.6;
   s.damper_knee_velocity_m_per_s = 0.05;
   s.damping_above_knee_Ns_per_m = 400.0;
+  s.damping_above_knee_exponent = 0.6;
   s.top_mount_small_amplitude_stiffness_N_per_m = 900000.0;
   s.top_mount_transition_deflection_m = 2e-4;
   s.static_friction_force_N = 110.0;

@@ -110,7 +110,8 @@ TEST(ParameterTable, EachNamedRowIsTheRowOfItsKey) {
         "friction_compression_to_rebound_ratio"},
        {&quarter_car_rows::free_play_m, "free_play_m"},
        {&quarter_car_rows::command_exponent, "command_exponent"},
-       {&quarter_car_rows::free_play_damping_Ns_per_m, "free_play_damping_Ns_per_m"}});
+       {&quarter_car_rows::free_play_damping_Ns_per_m, "free_play_damping_Ns_per_m"},
+       {&quarter_car_rows::damping_above_knee_exponent, "damping_above_knee_exponent"}});
   expect_named(kHalfCarBodyParameters,
                {{&half_car_body_rows::body_mass_kg, "body_mass_kg"},
                 {&half_car_body_rows::pitch_inertia_kg_m2, "pitch_inertia_kg_m2"},

@@ -28,6 +28,15 @@ inline model::StrutTestParameters<double> mr_press_truth() {
   return p;
 }
 
+// A user's start for mr_press_truth()'s levels: each about a third off, no offset.
+inline void set_levels_a_third_off(model::StrutTestParameters<double>& p) {
+  p.damping_Ns_per_m = 1000.0;
+  p.coulomb_force_N = 200.0;
+  p.damping_per_command_Ns_per_m = 1700.0;
+  p.coulomb_force_per_command_N = 750.0;
+  p.force_offset_N = 0.0;
+}
+
 // How the file's tests are run and recorded.
 struct FiveCurrentTests {
   int tests = 5;            // at 0, 0.25, 0.5, ... A

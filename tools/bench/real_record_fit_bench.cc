@@ -2,8 +2,8 @@
 // licences; read from there, never copied): the target is ≤ 30 s per fit (median).
 // The models and free parameters are tools/validate-real's:
 // - the UTFSM MR damper, 10 mm / 2 Hz: five currents pooled, one command law I^p with the
-//   press's damped free play and a command-scaled knee (12 free), each test weighed by its own
-//   spread;
+//   press's damped free play and a command-scaled knee whose force above it grows as |v|^n
+//   (13 free), each test weighed by its own spread;
 // - the dry-friction damper (BRFD), first half: Dahl + free play + direction-dependent friction
 //   and the mass the load cell carries (6 free), from the data sheet
 //   datasets/lab/friction_damper_datasheet.yaml;
@@ -117,7 +117,8 @@ void BM_RealMrSineFiveCurrents10mm(benchmark::State& state) {
   const auto tests = ridefit::fitting::load_hysteresis_tests(file);
   std::vector<std::string> free = kMrFree;
   for (const char* name : {"command_exponent", "free_play_m", "free_play_damping_Ns_per_m",
-                           "damper_knee_velocity_m_per_s", "damping_above_knee_Ns_per_m"}) {
+                           "damper_knee_velocity_m_per_s", "damping_above_knee_Ns_per_m",
+                           "damping_above_knee_exponent"}) {
     free.emplace_back(name);
   }
   fit(state, tests,
@@ -125,7 +126,8 @@ void BM_RealMrSineFiveCurrents10mm(benchmark::State& state) {
                                            {"free_play_m", 3e-4},
                                            {"free_play_damping_Ns_per_m", 3e4},
                                            {"damper_knee_velocity_m_per_s", 0.04},
-                                           {"damping_above_knee_Ns_per_m", 300.0}}),
+                                           {"damping_above_knee_Ns_per_m", 300.0},
+                                           {"damping_above_knee_exponent", 0.5}}),
       free, ridefit::fitting::RecordWeighting::kRelative);
 }
 BENCHMARK(BM_RealMrSineFiveCurrents10mm)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);

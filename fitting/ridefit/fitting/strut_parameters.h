@@ -38,7 +38,7 @@ struct StrutParameterInfo {
 // tension positive: the push-out grows as the rod goes in); fits of the UTFSM MR files that
 // allowed it traded a negative rate against the offset (the 2 mm file: −16.7 kN/m, offset
 // −462 N, 19 % NRMSE; held ≥ 0: 2.2 kN/m, 106 N, 12 %).
-inline constexpr std::array<StrutParameterInfo, 26> kStrutParameters{{
+inline constexpr std::array<StrutParameterInfo, 27> kStrutParameters{{
     {&model::quarter_car_rows::dahl_sigma0_N_per_m, 1e3, 1e10, true},
     {&model::quarter_car_rows::coulomb_force_N, 0.0, 1e4, true},
     {&model::quarter_car_rows::dahl_exponent, 0.2, 5.0, true},
@@ -67,6 +67,8 @@ inline constexpr std::array<StrutParameterInfo, 26> kStrutParameters{{
     {&model::strut_rig_rows::moving_mass_kg, 0.0, 1e5, false},
     // A free play's damping acts only with free play (its 0, a dry play, is inside the box).
     {&model::quarter_car_rows::free_play_damping_Ns_per_m, 0.0, 1e7, true},
+    // The knee's power: a shear-thinning MR fluid fits 0.2–0.5 (acts only with the knee).
+    {&model::quarter_car_rows::damping_above_knee_exponent, 0.05, 3.0, true},
 }};
 
 // The strut of a quarter-car model as the rig sees it: its damper path's parameters, with no gas

@@ -28,6 +28,7 @@ constexpr std::string_view kOptionalAxleKeys[] = {
     axle_rows::compression_to_rebound_ratio.key,
     axle_rows::damper_knee_velocity_m_per_s.key,
     axle_rows::damping_above_knee_Ns_per_m.key,
+    axle_rows::damping_above_knee_exponent.key,
     axle_rows::top_mount_small_amplitude_stiffness_N_per_m.key,
     axle_rows::top_mount_transition_deflection_m.key,
     axle_rows::static_friction_force_N.key,

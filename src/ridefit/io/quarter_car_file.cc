@@ -129,6 +129,16 @@ void read_strut_effects(const YamlMap& file, model::StrutParameters<double>& p) 
         file.parameter(rows::friction_compression_to_rebound_ratio);
   }
   if (file.has(rows::free_play_m)) p.free_play_m = file.parameter(rows::free_play_m);
+  // The knee's power (default 1, a straight slope) acts only above the knee.
+  if (file.has(rows::damping_above_knee_exponent)) {
+    p.damping_above_knee_exponent = file.parameter(rows::damping_above_knee_exponent);
+    if (p.damping_above_knee_exponent != 1.0 && !(p.damper_knee_velocity_m_per_s > 0.0)) {
+      throw InputError(fmt::format(
+          "{} is {} but the damper has no knee: give damper_knee_velocity_m_per_s and "
+          "damping_above_knee_Ns_per_m as well (the power acts above the knee), or leave it out",
+          file.locate(rows::damping_above_knee_exponent), p.damping_above_knee_exponent));
+    }
+  }
   // The play's damping (default 0, a dry play) acts only while its slack is crossed.
   if (file.has(rows::free_play_damping_Ns_per_m)) {
     p.free_play_damping_Ns_per_m = file.parameter(rows::free_play_damping_Ns_per_m);

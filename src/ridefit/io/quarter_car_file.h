@@ -45,6 +45,7 @@ namespace ridefit::io {
 //   # compression ratio in compression). Both keys.
 //   damper_knee_velocity_m_per_s: 0.1      # v_k, in (0, 10]
 //   damping_above_knee_Ns_per_m: 300       # c_h, in (0, damping_Ns_per_m]
+//   damping_above_knee_exponent: 0.4       # n, in (0, 5], default 1: F grows as |v|^n above
 //   # Stribeck level of the Dahl element, stribeck_curve.h (needs coulomb_force_N > 0):
 //   #   Fc(v) = Fc + (Fs − Fc)·exp(−(v/v_s)²).
 //   stribeck_velocity_m_per_s: 0.01        # v_s, in (0, 10]; switches it on

@@ -65,7 +65,7 @@ inline constexpr const ParameterInfo& skyhook_share = kControlParameters[4];
 
 // The quarter-car row indices an axle has, in HalfCarAxle's order: its wheel, tyre and coil
 // spring, then the strut's (kStrutRows).
-inline constexpr std::size_t kHalfCarAxleRows = 23;
+inline constexpr std::size_t kHalfCarAxleRows = 24;
 const std::array<std::size_t, kHalfCarAxleRows>& half_car_axle_rows();
 
 // The field of `p` (or of `control`) of a dotted key, with its row; none for a key the half car

@@ -29,7 +29,8 @@ std::string QuarterCar::nonlinearity() const {
       add(fmt::format("the damper's compression_to_rebound_ratio {}",
                       p.compression_to_rebound_ratio));
     }
-    if (path.damper.has_knee() && p.damping_above_knee_Ns_per_m != p.damping_Ns_per_m) {
+    if (path.damper.has_knee() && (p.damping_above_knee_Ns_per_m != p.damping_Ns_per_m ||
+                                   p.damping_above_knee_exponent != 1.0)) {
       add(fmt::format("the damper's knee at {} m/s", p.damper_knee_velocity_m_per_s));
     }
   }

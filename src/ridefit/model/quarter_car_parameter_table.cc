@@ -55,6 +55,13 @@ std::optional<ParameterError> validate_strut(const StrutParameters<double>& p,
                     p.damping_above_knee_Ns_per_m, p.damping_Ns_per_m,
                     key(rows::damping_Ns_per_m))};
   }
+  if (p.damping_above_knee_exponent != 1.0 && !(p.damper_knee_velocity_m_per_s > 0.0)) {
+    return ParameterError{
+        key(rows::damping_above_knee_exponent),
+        fmt::format("is {} but the damper has no knee: '{}' > 0 as well (the "
+                    "power acts above the knee), or 1",
+                    p.damping_above_knee_exponent, key(rows::damper_knee_velocity_m_per_s))};
+  }
   if (p.free_play_damping_Ns_per_m > 0.0 && !(p.free_play_m > 0.0)) {
     return ParameterError{key(rows::free_play_damping_Ns_per_m),
                           fmt::format("needs free play: '{}' > 0 (it is {}); the damping acts "

@@ -16,7 +16,7 @@ namespace ridefit::model {
 // the keys they share. tyre_lift_off and acc_sensor_order are switches, not parameters, and are
 // not listed; neither is the damper state (the topology). The last three rows are the
 // accelerometers' measuring chain (acceleration_sensors.h), not physics.
-inline constexpr std::array<ParameterInfo, 31> kQuarterCarParameters{{
+inline constexpr std::array<ParameterInfo, 32> kQuarterCarParameters{{
     {"sprung_mass_kg", "kg", 0.0, 1e5, true, false, "body mass carried by the corner"},
     {"unsprung_mass_kg", "kg", 0.0, 1e5, true, false, "wheel, hub, brake and strut body"},
     {"tyre_stiffness_N_per_m", "N/m", 0.0, 1e10, true, false, "tyre vertical stiffness"},
@@ -68,6 +68,8 @@ inline constexpr std::array<ParameterInfo, 31> kQuarterCarParameters{{
      "controlled damper: levels affine in the command to this power (default 1)"},
     {"free_play_damping_Ns_per_m", "N*s/m", 0.0, 1e7, false, false,
      "free play's damping while its slack is crossed (needs free_play_m); 0 = a dry play"},
+    {"damping_above_knee_exponent", "1", 0.0, 5.0, true, false,
+     "damper force above the knee grows as |v|^n (default 1; < 1 flattens; needs the knee)"},
 }};
 
 // Each row by name, for code that means one parameter: quarter_car_rows::coulomb_force_N is the
@@ -108,6 +110,7 @@ inline constexpr const ParameterInfo& friction_compression_to_rebound_ratio =
 inline constexpr const ParameterInfo& free_play_m = kQuarterCarParameters[28];
 inline constexpr const ParameterInfo& command_exponent = kQuarterCarParameters[29];
 inline constexpr const ParameterInfo& free_play_damping_Ns_per_m = kQuarterCarParameters[30];
+inline constexpr const ParameterInfo& damping_above_knee_exponent = kQuarterCarParameters[31];
 }  // namespace quarter_car_rows
 
 // Index of `key` in kQuarterCarParameters, or none.
@@ -156,7 +159,8 @@ T& quarter_car_parameter(QuarterCarParameters<T>& p, std::size_t index) {
                        &p.friction_compression_to_rebound_ratio,
                        &p.free_play_m,
                        &p.command_exponent,
-                       &p.free_play_damping_Ns_per_m};
+                       &p.free_play_damping_Ns_per_m,
+                       &p.damping_above_knee_exponent};
   static_assert(sizeof(fields) / sizeof(fields[0]) == kQuarterCarParameters.size());
   return *fields[index];
 }
@@ -168,7 +172,7 @@ const T& quarter_car_parameter(const QuarterCarParameters<T>& p, std::size_t ind
 
 // The strut's rows (StrutParameters), in its fields' order: the damper path's parameters that
 // the quarter car, each half-car axle and the rig share.
-inline constexpr std::array<std::size_t, 19> kStrutRows{
+inline constexpr std::array<std::size_t, 20> kStrutRows{
     quarter_car_row_index(quarter_car_rows::top_mount_stiffness_N_per_m),
     quarter_car_row_index(quarter_car_rows::damping_Ns_per_m),
     quarter_car_row_index(quarter_car_rows::dahl_sigma0_N_per_m),
@@ -177,6 +181,7 @@ inline constexpr std::array<std::size_t, 19> kStrutRows{
     quarter_car_row_index(quarter_car_rows::compression_to_rebound_ratio),
     quarter_car_row_index(quarter_car_rows::damper_knee_velocity_m_per_s),
     quarter_car_row_index(quarter_car_rows::damping_above_knee_Ns_per_m),
+    quarter_car_row_index(quarter_car_rows::damping_above_knee_exponent),
     quarter_car_row_index(quarter_car_rows::top_mount_small_amplitude_stiffness_N_per_m),
     quarter_car_row_index(quarter_car_rows::top_mount_transition_deflection_m),
     quarter_car_row_index(quarter_car_rows::static_friction_force_N),
@@ -201,6 +206,7 @@ T& strut_field(StrutParameters<T>& s, std::size_t i) {
                        &s.compression_to_rebound_ratio,
                        &s.damper_knee_velocity_m_per_s,
                        &s.damping_above_knee_Ns_per_m,
+                       &s.damping_above_knee_exponent,
                        &s.top_mount_small_amplitude_stiffness_N_per_m,
                        &s.top_mount_transition_deflection_m,
                        &s.static_friction_force_N,
@@ -226,7 +232,7 @@ constexpr std::optional<std::size_t> strut_row(const ParameterInfo& row) {
 
 // The strut's ranges and rules (the effects' keys together or not at all, k_s >= k_l,
 // c_h <= c_r, Fs >= Fc, Stribeck only with Dahl friction, a free play's damping only with free
-// play); each key named with `prefix` ("front."
+// play, a knee's exponent only with the knee); each key named with `prefix` ("front."
 // for a half-car axle). `passive_damper` allows damping_Ns_per_m = 0 (a passive half-car axle's
 // damper; a strut's rate divides by it).
 std::optional<ParameterError> validate_strut(const StrutParameters<double>& p,

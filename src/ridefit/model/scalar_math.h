@@ -18,6 +18,21 @@ T sign_positive_at_zero(const T& x) {
   return x < 0.0 ? T(-1.0) : T(1.0);
 }
 
+// True when `d` is exactly 1 and carries no derivative (a double, or a Jet of a value the fit
+// holds): a law may then take its d = 1 form, whose tangents in d would be lost. Eigen's
+// AutoDiffScalar (CVODE's Jacobian) always takes the general form: its d is never differentiated,
+// and the shipped records CVODE writes follow that Jacobian's last digits (the drift test).
+template <typename E>
+bool held_at_one(const E& d) {
+  if constexpr (std::is_arithmetic_v<E>) {
+    return d == 1.0;
+  } else if constexpr (requires { d.v.isZero(); }) {  // ceres::Jet
+    return d == 1.0 && d.v.isZero();
+  } else {
+    return false;
+  }
+}
+
 // sgn(s) * |s|^d for d > 0, with an exact zero at s = 0, where log|s| would be -inf. There the
 // derivative with respect to d is 0 by continuity, and the one with respect to s is that of the
 // power: 1 for d = 1 (s itself is returned, so tangents pass through: the Dahl element sits at
@@ -31,11 +46,7 @@ T signed_power(const T& s, const E& d) {
   if (s == 0.0) return d == 1.0 ? s : T(0.0);
   // The common d = 1 without exp and log, when d carries no derivative (a double, or a Jet of
   // an exponent the fit holds: the Dahl shape of every MR fit, evaluated at each stage).
-  if constexpr (std::is_same_v<E, double>) {
-    if (d == 1.0) return s;
-  } else if constexpr (requires { d.v.isZero(); }) {  // ceres::Jet
-    if (d == 1.0 && d.v.isZero()) return s;
-  }
+  if (held_at_one(d)) return s;
   const T magnitude = exp(d * log(abs(s)));
   return s < 0.0 ? T(-magnitude) : magnitude;
 }

@@ -27,6 +27,8 @@ struct StrutParameters {
   // Blow-off knee (asymmetric_damper.h); v_k = 0 off.
   T damper_knee_velocity_m_per_s{0.0};
   T damping_above_knee_Ns_per_m{0.0};
+  // The force above the knee grows as a power n of the speed (asymmetric_damper.h); 1 straight.
+  T damping_above_knee_exponent{1.0};
   // Top mount stiffer at small amplitude (amplitude_stiffening_spring.h); δ0 = 0 off.
   T top_mount_small_amplitude_stiffness_N_per_m{0.0};
   T top_mount_transition_deflection_m{0.0};
@@ -72,7 +74,8 @@ struct StrutParameters {
     return {
         {top_mount_stiffness_N_per_m, top_mount_small_amplitude_stiffness_N_per_m,
          top_mount_transition_deflection_m},
-        {c, compression_to_rebound_ratio, damper_knee_velocity_m_per_s, above_knee},
+        {c, compression_to_rebound_ratio, damper_knee_velocity_m_per_s, above_knee,
+         damping_above_knee_exponent},
         {dahl_sigma0_N_per_m, fc, dahl_exponent, static_friction_force_N + (fc - coulomb_force_N),
          stribeck_velocity_m_per_s, friction_compression_to_rebound_ratio},
         free_play_m,
@@ -95,6 +98,7 @@ struct StrutParameters {
     s.compression_to_rebound_ratio = U(compression_to_rebound_ratio);
     s.damper_knee_velocity_m_per_s = U(damper_knee_velocity_m_per_s);
     s.damping_above_knee_Ns_per_m = U(damping_above_knee_Ns_per_m);
+    s.damping_above_knee_exponent = U(damping_above_knee_exponent);
     s.top_mount_small_amplitude_stiffness_N_per_m = U(top_mount_small_amplitude_stiffness_N_per_m);
     s.top_mount_transition_deflection_m = U(top_mount_transition_deflection_m);
     s.static_friction_force_N = U(static_friction_force_N);
