@@ -284,7 +284,7 @@ def fit_psd(measurement: Union[PathLike, Mapping[str, Any]], model: ModelLike,
 def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Sequence[Any]],
              excitations: Sequence[PathLike] = (), effects: Union[str, Iterable[str]] = "all",
              free: Iterable[str] = (),
-             tolerances: Union[str, Mapping[str, float]] = "none",
+             tolerances: Union[str, Mapping[str, float]] = "default",
              band_Hz: Tuple[float, float] = (0.5, 30.0),
              segment_s: float = 4.0, screening_rtol: float = 1e-3, rtol: float = 1e-4,
              body_noise_psd: Optional[float] = None, wheel_noise_psd: Optional[float] = None,
@@ -296,16 +296,17 @@ def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Seque
     channel names in SI units (a SimulationResult too). effects: 'all' or a list of the library's ids.
     Returns the CLI's JSON structure (ranked effects, scores, parameters, the gap before and
     after) as a dict; no report folder is written. progress: called with each line the CLI
-    prints on stderr (from the diagnosis's threads, with the GIL taken). tolerances (vehicle
-    spectra): the baseline values a data sheet is unsure of, freed in every fit with a Gaussian
-    prior at the model's value, as `--tolerances`: "none" (the default: held), "datasheet" (the
-    usual set), or a dict {key: share of the value as one standard deviation}."""
+    prints on stderr (from the diagnosis's threads, with the GIL taken). tolerances: the
+    baseline values a data sheet is unsure of, freed in every fit, as `--tolerances`:
+    "default" (vehicle spectra: held; rig loops: "datasheet"), "none" (held), "datasheet" (the
+    usual set: on spectra with a Gaussian prior at the model's value, on rig loops within three
+    tolerances of it), or a dict {key: share of the value as one standard deviation}."""
     if isinstance(records, (str, os.PathLike, Mapping)):
         records = [records]
     if isinstance(tolerances, str):
-        if tolerances not in ("datasheet", "none"):
-            raise InputError(f"tolerances: '{tolerances}'; expected 'datasheet', 'none' or a "
-                             "dict {key: share}")
+        if tolerances not in ("default", "datasheet", "none"):
+            raise InputError(f"tolerances: '{tolerances}'; expected 'default', 'datasheet', "
+                             "'none' or a dict {key: share}")
         sheet = {} if tolerances == "none" else None
     else:
         sheet = {str(k): float(v) for k, v in tolerances.items()}
@@ -314,9 +315,9 @@ def diagnose(model: ModelLike, records: Union[PathLike, Mapping[str, Any], Seque
     with _recording_files(records) as paths:
         return _ridefit._diagnose(
             _model(model), paths, [os.fspath(e) for e in excitations], list(effects),
-            list(free), sheet, (float(band_Hz[0]), float(band_Hz[1])), float(segment_s),
-            float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd, int(threads),
-            progress)
+            list(free), sheet, tolerances == "datasheet", (float(band_Hz[0]), float(band_Hz[1])),
+            float(segment_s), float(screening_rtol), float(rtol), body_noise_psd, wheel_noise_psd,
+            int(threads), progress)
 
 
 def optimise(study: PathLike, output: Optional[PathLike] = None,

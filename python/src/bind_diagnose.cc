@@ -41,8 +41,11 @@ struct DiagnoseArguments {
   std::vector<std::string> excitations;
   std::vector<std::string> effects;  // empty: all
   std::vector<std::string> free;
-  // The baseline's tolerances; none: dx::datasheet_tolerances().
+  // The baseline's tolerances as given (a dict, or {} for "none"); none given: the data kind's
+  // data sheet when `datasheet`, else its default (as the CLI's --tolerances: spectra hold the
+  // values, rig loops free the strut's sheet values).
   std::optional<std::map<std::string, double>> tolerances;
+  bool datasheet;
   std::pair<double, double> band_Hz;
   double segment_s;
   double screening_rtol;
@@ -79,6 +82,7 @@ nlohmann::json diagnose_loops(const ModelHandle& model, const DiagnoseArguments&
     }
   }
   options.baseline_free = a.free;
+  if (a.tolerances) options.baseline_tolerances = *a.tolerances;  // else the strut's sheet
   options.selection.threads = a.threads;
   const io::QuarterCarFile& file = model.quarter_car("diagnose");
   std::vector<fitting::HysteresisRecord> records;
@@ -123,7 +127,9 @@ nlohmann::json diagnose_spectra(const ModelHandle& model, const DiagnoseArgument
     }
   }
   options.baseline_free = a.free;
-  options.baseline_tolerances = a.tolerances ? *a.tolerances : dx::datasheet_tolerances();
+  options.baseline_tolerances = a.tolerances  ? *a.tolerances
+                                : a.datasheet ? dx::datasheet_tolerances()
+                                              : std::map<std::string, double>{};
   options.fit.band_low_Hz = a.band_Hz.first;
   options.fit.band_high_Hz = a.band_Hz.second;
   options.fit.segment_s = a.segment_s;
@@ -164,8 +170,8 @@ void bind_diagnose(py::module_& m) {
       [](const ModelHandle& model, std::vector<std::string> records,
          std::vector<std::string> excitations, std::vector<std::string> effects,
          std::vector<std::string> free, std::optional<std::map<std::string, double>> tolerances,
-         std::pair<double, double> band_Hz, double segment_s, double screening_rtol, double rtol,
-         std::optional<double> body_noise_psd, std::optional<double> wheel_noise_psd,
+         bool datasheet, std::pair<double, double> band_Hz, double segment_s, double screening_rtol,
+         double rtol, std::optional<double> body_noise_psd, std::optional<double> wheel_noise_psd,
          unsigned threads, const py::object& progress) {
         check_effects(effects);
         const DiagnoseArguments a{std::move(records),
@@ -173,6 +179,7 @@ void bind_diagnose(py::module_& m) {
                                   std::move(effects),
                                   std::move(free),
                                   std::move(tolerances),
+                                  datasheet,
                                   band_Hz,
                                   segment_s,
                                   screening_rtol,

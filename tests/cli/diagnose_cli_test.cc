@@ -162,8 +162,8 @@ INSTANTIATE_TEST_SUITE_P(
                      "(0, 10]"},
         BadDiagnosis{"ToleranceWithoutValue", "{record} --tolerances datasheet,sprung_mass_kg",
                      "'sprung_mass_kg' is not KEY=SHARE"},
-        BadDiagnosis{"RigWithTolerances", "{rig} --tolerances datasheet",
-                     "the data sheet's priors apply to vehicle spectra"},
+        BadDiagnosis{"RigToleranceOfAVehicleValue", "{rig} --tolerances sprung_mass_kg=0.03",
+                     "--tolerances: 'sprung_mass_kg' is not a strut-test parameter"},
         BadDiagnosis{"ExcitationCountMismatch",
                      "{record} {record} --excitation {long_road} --excitation {long_road} "
                      "--excitation {long_road}",
@@ -200,8 +200,14 @@ TEST(DiagnoseCli, RigRecordsGetTheLoopDiagnosis) {
     if (e["id"] == "bump_stop") skipped = e.contains("skipped");
   }
   EXPECT_TRUE(skipped);
+  // The strut's data-sheet values are freed by default and reported against the sheet.
+  std::vector<std::string> sheet;
+  for (const auto& v : j["sheet_values"]) sheet.push_back(v["name"].get<std::string>());
+  EXPECT_EQ(sheet, (std::vector<std::string>{"coulomb_force_N", "dahl_sigma0_N_per_m",
+                                             "damping_Ns_per_m", "top_mount_stiffness_N_per_m"}));
   const std::string report = testing::text_of(out + "/report.md");
   EXPECT_NE(report.find("NRMSE"), std::string::npos);
+  EXPECT_NE(report.find("The data sheet against the records"), std::string::npos);
   // model.yaml carries the Stribeck keys and loads as a model.
   const auto written = io::load_quarter_car(dir.path() / "diagnosis" / "model.yaml");
   EXPECT_NEAR(written.parameters.static_friction_force_N, 90.0, 9.0);

@@ -55,7 +55,10 @@ TEST_P(ShippedHiddenDataset, NamesExactlyWhatItsTruthHid) {
   if (c.unexplained) {
     EXPECT_NE(verdict.find("significant disagreement remains"), std::string::npos) << verdict;
   } else if (c.named.empty()) {
-    EXPECT_EQ(verdict, "no missing effect found");
+    // Nothing missing, no disagreement left (on rig records with the strut's sheet values free,
+    // the verdict adds that a load cell's gain cannot be told from them).
+    EXPECT_EQ(verdict.rfind("no missing effect found", 0), 0u) << verdict;
+    EXPECT_EQ(verdict.find("disagreement remains"), std::string::npos) << verdict;
   }
   if (c.name == "seed_top_mount_stiffening") {
     // datasets/hidden/seed_top_mount_stiffening_truth.yaml: 707 kN/m below δ0 = 5 mm.

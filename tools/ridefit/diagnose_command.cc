@@ -58,26 +58,6 @@ void check_flags(const DiagnoseFlags& flags) {
   }
 }
 
-// --tolerances: "datasheet" (dx::datasheet_tolerances()), "none" (also when the flag is not
-// given), and KEY=SHARE items, which win.
-std::map<std::string, double> tolerances_of(const std::vector<std::string>& items) {
-  std::map<std::string, double> tolerances;
-  std::vector<std::string> entries;
-  for (const auto& item : items) {
-    if (item == "datasheet") {
-      tolerances = dx::datasheet_tolerances();
-    } else if (item == "none") {
-      tolerances.clear();
-    } else {
-      entries.push_back(item);
-    }
-  }
-  for (const auto& [name, share] : parse_value_shares(entries, "--tolerances")) {
-    tolerances[name] = share;
-  }
-  return tolerances;
-}
-
 dx::DiagnosisOptions options_of(const DiagnoseFlags& flags) {
   dx::DiagnosisOptions options;
   options.effects = effect_ids(flags.effects);
@@ -87,7 +67,7 @@ dx::DiagnosisOptions options_of(const DiagnoseFlags& flags) {
     }
   }
   options.baseline_free = flags.free;
-  options.baseline_tolerances = tolerances_of(flags.tolerances);
+  options.baseline_tolerances = tolerances_of(flags.tolerances, dx::datasheet_tolerances(), {});
   options.fit.band_low_Hz = flags.band_Hz[0];
   options.fit.band_high_Hz = flags.band_Hz[1];
   options.fit.segment_s = flags.segment_s;
@@ -232,11 +212,14 @@ void add_diagnose_options(CLI::App& command, DiagnoseFlags& flags) {
       ->delimiter(',');
   command
       .add_option("--tolerances", flags.tolerances,
-                  "Vehicle spectra: baseline values the data sheet is unsure of, freed in every "
-                  "fit with a Gaussian prior at the sheet's value: 'datasheet' (masses 3 %, tyre "
-                  "and spring 8 %, damping 12 %, top mount 15 %, Coulomb force 25 %, one "
-                  "standard deviation), 'none' (the default: hold them), and KEY=SHARE items "
-                  "that add or change one, separated by commas")
+                  "Baseline values the data sheet is unsure of, freed in every fit: 'datasheet', "
+                  "'none' (hold them), and KEY=SHARE items (one standard deviation as a share "
+                  "of the value) that add or change one, separated by commas. Vehicle spectra: "
+                  "a Gaussian prior at the sheet's value; 'datasheet' is masses 3 %, tyre and "
+                  "spring 8 %, damping 12 %, top mount 15 %, Coulomb force 25 %; default none. "
+                  "Rig loops: within three tolerances of the sheet's value; 'datasheet' is "
+                  "damping 12 %, top mount 15 %, Coulomb force 25 %, dahl_sigma0 100 %, and the "
+                  "default")
       ->delimiter(',');
   command.add_option("--band", flags.band_Hz, "Compared band LOW,HIGH [Hz]")
       ->delimiter(',')

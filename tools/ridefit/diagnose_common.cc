@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "command_options.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/effect.h"
 #include "ridefit/io/atomic_file.h"
@@ -32,6 +33,27 @@ std::vector<std::string> effect_ids(const std::string& text) {
     start = comma + 1;
   }
   return ids;
+}
+
+std::map<std::string, double> tolerances_of(const std::vector<std::string>& items,
+                                            const std::map<std::string, double>& datasheet,
+                                            const std::map<std::string, double>& fallback) {
+  if (items.empty()) return fallback;
+  std::map<std::string, double> tolerances;
+  std::vector<std::string> entries;
+  for (const auto& item : items) {
+    if (item == "datasheet") {
+      tolerances = datasheet;
+    } else if (item == "none") {
+      tolerances.clear();
+    } else {
+      entries.push_back(item);
+    }
+  }
+  for (const auto& [name, share] : parse_value_shares(entries, "--tolerances")) {
+    tolerances[name] = share;
+  }
+  return tolerances;
 }
 
 std::vector<std::string> check_output_folder(const DiagnoseFlags& flags,

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,7 +26,7 @@ struct DiagnoseFlags {
   std::string effects = "all";
   std::string output_dir = "diagnosis";
   std::vector<std::string> free;
-  std::vector<std::string> tolerances;  // "datasheet" and/or key=share (vehicle spectra)
+  std::vector<std::string> tolerances;  // "datasheet", "none" and/or key=share
   std::vector<double> band_Hz = {0.5, 30.0};
   double segment_s = 4.0;
   double screening_rtol = 1e-3;
@@ -40,6 +41,12 @@ struct DiagnoseFlags {
 
 // --effects: all (empty) or ids separated by commas; InputError naming the library's ids.
 std::vector<std::string> effect_ids(const std::string& text);
+
+// --tolerances: "datasheet" (`datasheet`), "none", and KEY=SHARE items, which win; not given:
+// `fallback` (the data kind's default). Names are checked by the diagnosis' options.
+std::map<std::string, double> tolerances_of(const std::vector<std::string>& items,
+                                            const std::map<std::string, double>& datasheet,
+                                            const std::map<std::string, double>& fallback);
 
 // The files a diagnosis writes into -o (report.md, model.yaml and, with gnuplot on PATH,
 // `figure`), checked before any work (io::RunOutputs): none is an input (the model, a record,

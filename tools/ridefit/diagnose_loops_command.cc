@@ -31,12 +31,16 @@ DiagnosisOutput diagnose_loops(const DiagnoseFlags& flags, bool figure,
         "--excitation: strut rig records carry their own excitation (the displacement column); "
         "give none");
   }
-  if (!flags.tolerances.empty()) {
-    throw InputError(
-        "--tolerances: the data sheet's priors apply to vehicle spectra; on rig records free "
-        "the strut's values with --free");
-  }
   dx::LoopDiagnosisOptions options;
+  options.baseline_tolerances = tolerances_of(flags.tolerances, dx::strut_datasheet_tolerances(),
+                                              dx::strut_datasheet_tolerances());
+  for (const auto& [name, share] : options.baseline_tolerances) {
+    try {
+      fitting::strut_parameter_index(name);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--tolerances: {}", e.what()));
+    }
+  }
   options.effects = effect_ids(flags.effects);
   for (const auto& name : flags.free) {
     try {

@@ -64,6 +64,21 @@ TEST(LoopDiagnosisOptions, DefaultsHoldAndEachBadOptionIsNamed) {
   EXPECT_TRUE(refused([](auto& o) { o.baseline_free = {"sprung_mass_kg"}; }, "sprung_mass_kg"));
   EXPECT_TRUE(refused(
       [](auto& o) {
+        o.baseline_tolerances = {{"sprung_mass_kg", 0.03}};
+      },
+      "'sprung_mass_kg' is not a strut-test parameter"));
+  EXPECT_TRUE(refused(
+      [](auto& o) {
+        o.baseline_tolerances = {{"damping_Ns_per_m", 0.0}};
+      },
+      "baseline tolerance of damping_Ns_per_m: 0 of its value"));
+  EXPECT_TRUE(refused(
+      [](auto& o) {
+        o.baseline_tolerances = {{"damping_Ns_per_m", std::nan("")}};
+      },
+      "expected a share in (0, 10]"));
+  EXPECT_TRUE(refused(
+      [](auto& o) {
         o.baseline_free = {"force_offset_N", "force_offset_N"};
       },
       "twice"));

@@ -44,11 +44,12 @@ struct DiagnosisResult {
   // "missing effect found: …", "no missing effect found", or the unexplained disagreement.
   std::string verdict;
   // Where the final fit put the values the baseline's data sheet was unsure of
-  // (DiagnosisOptions::baseline_tolerances): a finding in itself ("spring −7 % ± 2 %").
+  // (DiagnosisOptions::baseline_tolerances, LoopDiagnosisOptions::baseline_tolerances): a
+  // finding in itself ("spring −7 % ± 2 %").
   struct SheetValue {
     std::string name;
-    double sheet = 0.0;      // the baseline's value, the prior's mean
-    double tolerance = 0.0;  // the prior's standard deviation as a share of it
+    double sheet = 0.0;      // the baseline's value (a prior's mean, or the bounds' centre)
+    double tolerance = 0.0;  // one standard deviation as a share of it
     double fitted = 0.0;
     std::optional<double> standard_error;
   };

@@ -50,6 +50,34 @@ void write_rounds(std::ostream& out, const DiagnosisResult& result, const std::s
   }
 }
 
+void write_sheet_values(std::ostream& out, const std::vector<DiagnosisResult::SheetValue>& values,
+                        const std::string& how) {
+  if (values.empty()) return;
+  out << "## The data sheet against the records\n\nThe baseline's uncertain values, " << how
+      << ", as the final fit put them:\n\n| parameter | sheet | tolerance | fitted | change "
+         "|\n| --- | --- | --- | --- | --- |\n";
+  for (const auto& v : values) {
+    const std::string se =
+        v.standard_error ? fmt::format(" ± {:.1f} %", 100.0 * *v.standard_error / v.sheet) : "";
+    out << fmt::format("| {} | {:.6g} | ±{:.0f} % | {:.6g} | {:+.1f} %{} |\n", v.name, v.sheet,
+                       100.0 * v.tolerance, v.fitted, 100.0 * (v.fitted / v.sheet - 1.0), se);
+  }
+  out << "\n";
+}
+
+nlohmann::json sheet_values_json(const std::vector<DiagnosisResult::SheetValue>& values) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& v : values) {
+    list.push_back({{"name", v.name},
+                    {"sheet", v.sheet},
+                    {"tolerance", v.tolerance},
+                    {"fitted", v.fitted},
+                    {"change", v.fitted / v.sheet - 1.0},
+                    {"standard_error", number_or_null(v.standard_error)}});
+  }
+  return list;
+}
+
 nlohmann::json values_json(const std::vector<FittedValue>& values) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& v : values) {

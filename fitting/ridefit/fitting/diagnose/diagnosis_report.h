@@ -20,7 +20,14 @@ void write_parameters(std::ostream& out, const std::vector<FittedValue>& values)
 void write_rounds(std::ostream& out, const DiagnosisResult& result, const std::string& cost_words,
                   const std::string& gap_unit);
 
+// "The data sheet against the records": where the final fit put each of the baseline's uncertain
+// values, with its move from the sheet; `how` says how the fits held them. Nothing when empty.
+void write_sheet_values(std::ostream& out, const std::vector<DiagnosisResult::SheetValue>& values,
+                        const std::string& how);
+
 nlohmann::json values_json(const std::vector<FittedValue>& values);
+
+nlohmann::json sheet_values_json(const std::vector<DiagnosisResult::SheetValue>& values);
 
 // The rounds with each effect's scores; `gap_key` names the gap (e.g. "gap_dB").
 nlohmann::json rounds_json(const DiagnosisResult& result, const std::string& gap_key);

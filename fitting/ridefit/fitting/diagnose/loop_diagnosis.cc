@@ -37,6 +37,23 @@ std::vector<std::string> default_free(const model::StrutTestParameters<double>& 
   return free;
 }
 
+// The baseline's uncertain values that apply to it (LoopDiagnosisOptions::baseline_tolerances),
+// each with its bounds: a value that is off (no friction, a rigid mount) has no sheet tolerance
+// to speak of, and σ0 without friction does nothing.
+ParameterBounds sheet_bounds(const model::StrutTestParameters<double>& strut,
+                             const std::map<std::string, double>& tolerances) {
+  namespace rows = model::quarter_car_rows;
+  ParameterBounds bounds;
+  for (const auto& [name, share] : tolerances) {
+    const double v = strut_parameter(strut, strut_parameter_index(name));
+    if (!(v > 0.0) || !std::isfinite(v)) continue;
+    if (name == rows::top_mount_stiffness_N_per_m.key_string() && v >= 1e9) continue;
+    if (name == rows::dahl_sigma0_N_per_m.key_string() && !(strut.coulomb_force_N > 0.0)) continue;
+    bounds[name] = {v / (1.0 + 3.0 * share), v * (1.0 + 3.0 * share)};
+  }
+  return bounds;
+}
+
 // `lead` followed by `r` (one record; the lead's last sample is before r's first).
 HysteresisRecord joined(const HysteresisRecord& lead, const HysteresisRecord& r) {
   HysteresisRecord all = lead;
@@ -86,10 +103,21 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   fit_options.bounds = bounds;
   fit_options.max_iterations = options.max_iterations;
   fit_options.solver = options.solver;
+  // A start may lie outside the sheet's bounds (the records' estimate of a damping that stands
+  // in for a missing friction; an effect's start that moves the damping): it starts from the
+  // nearest bound.
+  auto inside = [&](model::StrutTestParameters<double> p) {
+    for (const auto& [name, range] : bounds) {
+      double& v = strut_parameter(p, strut_parameter_index(name));
+      v = std::clamp(v, range.first, range.second);
+    }
+    return p;
+  };
   HysteresisFitResult fit;
   try {
     fit = fit_hysteresis_from_starts(
-        data.training, {start.strut, with_estimates(start.strut, estimate, free)}, fit_options);
+        data.training, {inside(start.strut), inside(with_estimates(start.strut, estimate, free))},
+        fit_options);
   } catch (const RunError& e) {
     s.failure = e.what();
     return s;
@@ -162,9 +190,16 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   if (data.training.empty() || data.held_out.empty()) {
     throw InputError("diagnose: loops need records to fit and records to judge");
   }
-  const std::vector<std::string> free =
+  std::vector<std::string> free =
       options.baseline_free.empty() ? default_free(baseline.strut) : options.baseline_free;
   for (const auto& name : free) strut_parameter_index(name);
+  // A value the caller frees by name is free within the fit's own bounds: the sheet's are for
+  // the values it does not name.
+  ParameterBounds sheet = sheet_bounds(baseline.strut, options.baseline_tolerances);
+  for (const auto& name : options.baseline_free) sheet.erase(name);
+  for (const auto& [name, range] : sheet) {
+    if (std::find(free.begin(), free.end(), name) == free.end()) free.push_back(name);
+  }
   const std::map<std::string, double> estimate = estimate_strut_start(data.training);
   const FitAndScore fit = [&](const DiagnosisModel& start, const std::vector<std::string>& names,
                               const ParameterBounds& bounds, FitPurpose purpose) {
@@ -183,10 +218,20 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   start.has_command = std::all_of(data.training.begin(), data.training.end(),
                                   [](const HysteresisRecord& r) { return !r.command.empty(); });
   start.damper_speed_rms_m_per_s = damper_speed_rms_m_per_s(data.training);
-  const Selection selection =
-      select_effects(start, free, {}, effects_to_try(options.effects), fit, selection_options, say);
+  const Selection selection = select_effects(start, free, sheet, effects_to_try(options.effects),
+                                             fit, selection_options, say);
 
   DiagnosisResult result = result_of(selection, DataKind::kStrutLoops);
+  for (const auto& [name, range] : sheet) {
+    const std::size_t index = strut_parameter_index(name);
+    DiagnosisResult::SheetValue v{name, strut_parameter(baseline.strut, index),
+                                  options.baseline_tolerances.at(name),
+                                  strut_parameter(result.final_model.strut, index), std::nullopt};
+    for (const auto& p : result.final_parameters) {
+      if (p.name == name) v.standard_error = p.standard_error;
+    }
+    result.sheet_values.push_back(v);
+  }
   const ScoredFit& before = selection.baseline;
   const ScoredFit& after = selection.final_fit;
   result.loops_before = map_loop_disagreement(data.held_out, before.held_out_signals, options.map);

@@ -8,10 +8,26 @@
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/diagnosis_options.h"
 #include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/model/quarter_car_parameter_table.h"
 
 namespace ridefit::fitting::diagnose {
 
+std::map<std::string, double> strut_datasheet_tolerances() {
+  namespace rows = model::quarter_car_rows;
+  return {{rows::damping_Ns_per_m.key_string(), 0.12},
+          {rows::top_mount_stiffness_N_per_m.key_string(), 0.15},
+          {rows::coulomb_force_N.key_string(), 0.25},
+          {rows::dahl_sigma0_N_per_m.key_string(), 1.0}};
+}
+
 void LoopDiagnosisOptions::validate() const {
+  for (const auto& [name, share] : baseline_tolerances) {
+    strut_parameter_index(name);  // InputError naming the strut parameters for an unknown one
+    if (!(share > 0.0 && share <= 10.0)) {
+      throw InputError(fmt::format(
+          "baseline tolerance of {}: {} of its value; expected a share in (0, 10]", name, share));
+    }
+  }
   std::set<std::size_t> freed;
   for (const auto& name : baseline_free) {
     // InputError naming the strut parameters for an unknown one.

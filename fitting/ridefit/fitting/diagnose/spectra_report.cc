@@ -68,20 +68,6 @@ nlohmann::json peaks_json(const DisagreementMap& map) {
   return j;
 }
 
-nlohmann::json sheet_values_json(const std::vector<DiagnosisResult::SheetValue>& values) {
-  nlohmann::json list = nlohmann::json::array();
-  for (const auto& v : values) {
-    list.push_back({{"name", v.name},
-                    {"sheet", v.sheet},
-                    {"tolerance", v.tolerance},
-                    {"fitted", v.fitted},
-                    {"change", v.fitted / v.sheet - 1.0},
-                    {"standard_error", v.standard_error ? nlohmann::json(*v.standard_error)
-                                                        : nlohmann::json(nullptr)}});
-  }
-  return list;
-}
-
 }  // namespace
 
 void write_spectra_report(std::ostream& out, const std::string& model_name,
@@ -123,19 +109,9 @@ void write_spectra_report(std::ostream& out, const std::string& model_name,
     out << "The model with the effect added: `model.yaml` (ready for simulate, fit and "
            "optimise).\n\n";
   }
-  if (!result.sheet_values.empty()) {
-    out << "## The data sheet against the records\n\nThe baseline's uncertain values, freed in "
-           "every fit with a Gaussian prior at the sheet's value (its tolerance one standard "
-           "deviation), as the final fit put them:\n\n| parameter | sheet | tolerance | fitted "
-           "| change |\n| --- | --- | --- | --- | --- |\n";
-    for (const auto& v : result.sheet_values) {
-      const std::string se =
-          v.standard_error ? fmt::format(" ± {:.1f} %", 100.0 * *v.standard_error / v.sheet) : "";
-      out << fmt::format("| {} | {:.6g} | ±{:.0f} % | {:.6g} | {:+.1f} %{} |\n", v.name, v.sheet,
-                         100.0 * v.tolerance, v.fitted, 100.0 * (v.fitted / v.sheet - 1.0), se);
-    }
-    out << "\n";
-  }
+  write_sheet_values(out, result.sheet_values,
+                     "freed in every fit with a Gaussian prior at the sheet's value (its "
+                     "tolerance one standard deviation)");
   if (!figure_file.empty()) {
     out << "![measured against simulated, before and after](" << figure_file
         << ")\n\nShaded: the measured PSD's confidence interval; the disagreement regions are "
