@@ -50,8 +50,15 @@ TEST(DiagnoseCli, QuickRunWritesReportModelAndJson) {
   const auto j = json_of(run.output);
   // The data come from the model (another integrator, the sensors' noise and band): nothing is
   // missing.
-  EXPECT_EQ(j["verdict"], "no missing effect found") << run.output;
+  const std::string verdict = j["verdict"];
+  EXPECT_EQ(verdict.rfind("no missing effect found (p = ", 0), 0u) << run.output;
   EXPECT_TRUE(j["named"].empty());
+  // Nothing missing, each of the two effects: weighed, nothing missing the most probable.
+  ASSERT_EQ(j["explanations"].size(), 3u) << run.output;
+  EXPECT_TRUE(j["explanations"][0]["effects"].empty()) << run.output;
+  double total = 0.0;
+  for (const auto& e : j["explanations"]) total += e["probability"].get<double>();
+  EXPECT_NEAR(total, 1.0, 1e-9);
   EXPECT_LT(j["gap_before_dB"].get<double>(), 0.5);
   ASSERT_EQ(j["rounds"].size(), 1u);
   EXPECT_EQ(j["rounds"][0]["effects"].size(), 2u);

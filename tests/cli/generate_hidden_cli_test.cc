@@ -136,6 +136,26 @@ TEST(GenerateHiddenCli, WritesStrutRigRecordsWithTheTruthsForce) {
   EXPECT_NE(truth.find("gas_stiffness_N_per_m: 15000"), std::string::npos) << truth;
 }
 
+// A rig dataset's data-sheet baseline: the model whose strut the rig diagnosis puts on the rig,
+// its strut's values off within the sheet's tolerances.
+TEST(GenerateHiddenCli, WritesARigDatasheetBaseline) {
+  testing::TempDir dir("ridefit_hidden_cli");
+  const std::string model = dataset("hidden/baselines/passat_slip.yaml");
+  const auto file = dir.write(
+      "spec.yaml", rig_spec() + "    baseline: {model: " + model + ", datasheet_seed: 4}\n");
+  const auto a = dir.path() / "a";
+  ASSERT_EQ(run_cli("generate-hidden " + file + " -o " + a.string()).exit_code, 0);
+  ASSERT_TRUE(std::filesystem::exists(a / "gas_baseline.yaml"));
+  const auto sheet = io::load_quarter_car(a / "gas_baseline.yaml").parameters;
+  const auto own = io::load_quarter_car(model).parameters;
+  const double damping = sheet.damping_Ns_per_m / own.damping_Ns_per_m - 1.0;
+  EXPECT_NE(damping, 0.0);
+  EXPECT_LE(std::abs(damping), 0.12);
+  const double mount = sheet.top_mount_stiffness_N_per_m / own.top_mount_stiffness_N_per_m - 1.0;
+  EXPECT_NE(mount, 0.0);
+  EXPECT_LE(std::abs(mount), 0.15);
+}
+
 struct BadSpec {
   std::string name;
   std::string text;
@@ -192,10 +212,8 @@ INSTANTIATE_TEST_SUITE_P(
                 spec("    baseline: {model: " + dataset("hidden/baselines/passat_slip.yaml") +
                      ", errors: {sprung_mass: 0.02}}\n"),
                 "'sprung_mass' is not a quarter-car parameter"},
-        BadSpec{"RigWithABaseline",
-                rig_spec() + "    baseline: {model: " +
-                    dataset("hidden/baselines/passat_slip.yaml") + ", datasheet_seed: 3}\n",
-                "data-sheet baselines are written for vehicle datasets only"},
+        BadSpec{"RigBaselineWithoutAModel", rig_spec() + "    baseline: {datasheet_seed: 3}\n",
+                "model"},
         BadSpec{"RigWithASensor", rig_spec() + "    sensor: {noise: 0.01}\n",
                 "takes noise_N, not a sensor"}),
     [](const ::testing::TestParamInfo<BadSpec>& param_info) { return param_info.param.name; });

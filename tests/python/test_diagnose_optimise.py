@@ -31,7 +31,8 @@ def test_diagnose_equals_the_cli(tmp_path, record, slip_baseline):
                               segment_s=2, threads=2, progress=lines.append)
     assert_same_numbers(result, cli, rtol=1e-6, skip=RUN_KEYS)
     assert lines and all(isinstance(line, str) for line in lines)
-    assert result["verdict"] == "no missing effect found"
+    assert result["verdict"].startswith("no missing effect found (p = ")
+    assert result["explanations"][0]["effects"] == []
 
 
 def test_diagnose_of_rig_loops_equals_the_cli(tmp_path, passat):

@@ -462,6 +462,7 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
     std::vector<double> psd;
     std::vector<std::vector<double>> none;
     setup.welch.evaluate(*acc, {}, psd, none);
+    mismatch.channel_residuals.emplace_back();
     for (std::size_t b = 0; b < psd.size(); ++b) {
       const double shown =
           chain_power(car.parameters().sensors, body, setup.welch.frequency_Hz(b)) * psd[b];
@@ -469,6 +470,7 @@ std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& m, const model::Qu
           bin_residual(std::max(shown, 1e-300), noise_psd, setup.log_bias, (*measured_log)[b])
               .value;
       mismatch.cost += 0.5 * r * r;
+      mismatch.channel_residuals.back().push_back(r);
       ++mismatch.residuals;
     }
   }

@@ -95,6 +95,8 @@ struct PsdMismatch {
   double cost = 0.0;
   std::size_t residuals = 0;
   std::vector<double> body_acc_m_per_s2, wheel_acc_m_per_s2;
+  // The residuals per channel (body, then wheel when measured), bin by bin.
+  std::vector<std::vector<double>> channel_residuals;
 };
 std::optional<PsdMismatch> psd_mismatch(const PsdMeasurement& measurement,
                                         const model::QuarterCar& car, const PsdFitOptions& options);

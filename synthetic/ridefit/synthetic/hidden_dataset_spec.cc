@@ -119,14 +119,9 @@ void read_sensor(const io::YamlMap& d, HiddenDataset& out) {
   s.finish();
 }
 
-// `baseline:` of a vehicle dataset: its model and how its values are off.
+// `baseline:` of a dataset: its model and how its values are off (a rig dataset's: the model
+// whose strut a rig diagnosis puts on the rig, with the strut's sheet values freed).
 void read_baseline(const io::YamlMap& d, HiddenDataset& out) {
-  if (out.strut_rig) {
-    throw InputError(fmt::format(
-        "{}: data-sheet baselines are written for vehicle datasets only (a rig diagnosis holds "
-        "the strut's values it does not free)",
-        d.locate("baseline")));
-  }
   const io::YamlMap b = d.map("baseline");
   out.baseline_model = b.file("model");
   if (b.has("datasheet_seed") == b.has("errors")) {

@@ -32,7 +32,8 @@ namespace ridefit::synthetic {
 //       baseline: {model: baselines/passat_slip.yaml, datasheet_seed: 7}  # optional: writes
 //                 # NAME_baseline.yaml, that model with values off as a data sheet's are, drawn
 //                 # (datasheet_values.h); or errors: {spring_stiffness_N_per_m: -0.07, ...},
-//                 # each value times 1 + its share (vehicle datasets)
+//                 # each value times 1 + its share (vehicle and rig datasets: a rig
+//                 # diagnosis puts that model's strut on the rig)
 //     - name: rig_gas_force                    # a strut rig test instead
 //       kind: strut_rig
 //       model: ../vehicles/passat_b8_front.yaml  # its strut, put on the rig (strut_on_rig)
@@ -74,7 +75,7 @@ struct HiddenDataset {
 // Every dataset of `spec_file`. InputError naming the file and key for a missing, unknown or
 // out-of-range key, an unknown effect (listing the known ones), a rig multisine with unequal
 // lists or a frequency at or above Nyquist, a vehicle sensor band or log sweep reaching Nyquist,
-// a rig dataset with a sensor or a baseline, a baseline with neither or both of datasheet_seed
+// a rig dataset with a sensor, a baseline with neither or both of datasheet_seed
 // and errors or an error share outside (-1, 10], no datasets, or two datasets of one name (their
 // files would collide). Models and excitations are only named here; load_truth_model reads them.
 std::vector<HiddenDataset> read_hidden_spec(const std::filesystem::path& spec_file);

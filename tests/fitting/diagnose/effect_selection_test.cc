@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "ridefit/fitting/diagnose/explanation_evidence.h"
+
 #include "support/passat.h"
 
 namespace ridefit::fitting::diagnose {
@@ -59,6 +61,84 @@ TEST(EffectSelection, SpectraReportTheFitFromTheBaselinesOwnValuesWhenItIsLower)
   EXPECT_EQ(s.baseline.model.car.parameters().sprung_mass_kg, 341.2);
   EXPECT_NEAR(s.final_fit.model.car.parameters().sprung_mass_kg, 385.4, 0.02 * 385.4);
   EXPECT_NEAR(s.final_fit.training_cost, 0.0317, 1e-12);
+}
+
+// A stand-in where each of three effects takes a fixed share off the cost, added when several are
+// present: tyre damping 35, stiffening 40, bump stop 32 of the baseline's 100 (each significant).
+ScoredFit additive_fit(const DiagnosisModel& start, const std::vector<std::string>& free,
+                       const ParameterBounds&, FitPurpose) {
+  const auto& p = start.car.parameters();
+  ScoredFit s;
+  s.training_residuals = s.held_out_residuals = 1000;
+  s.correlation_time = 5.0;
+  double cost = 100.0;
+  if (p.tyre_damping_Ns_per_m > 0.0) cost -= 35.0;
+  if (p.top_mount_transition_deflection_m > 0.0) cost -= 40.0;
+  if (p.bump_stop_stiffness_N_per_m > 0.0) cost -= 32.0;
+  s.training_cost = s.held_out_cost = cost;
+  s.model = start;
+  for (const auto& name : free) s.values.push_back({name, 1.0, 0.1});
+  return s;
+}
+
+// The stick Passat without its tyre damping, so that all three effects can be tried.
+DiagnosisModel stick_passat_without_tyre_damping() {
+  auto parameters = testing::passat_corner().parameters;
+  parameters.tyre_damping_Ns_per_m = 0.0;
+  return {model::QuarterCar(model::DamperState::kStick, parameters)};
+}
+
+std::vector<const Effect*> three_effects() {
+  return {&find_effect("tyre_damping"), &find_effect("top_mount_amplitude_stiffening"),
+          &find_effect("bump_stop")};
+}
+
+const Explanation* explanation(const std::vector<Explanation>& all,
+                               const std::vector<std::string>& effects) {
+  return find_explanation(all, effects);
+}
+
+TEST(EffectSelection, EveryExplanationIsFittedAndThePairsOfSignificantEffectsJointly) {
+  SelectionOptions options;
+  options.max_effects = 2;
+  options.threads = 1;
+  options.refine = false;
+  const Selection s =
+      select_effects(stick_passat_without_tyre_damping(), {"sprung_mass_kg"}, {}, three_effects(),
+                     additive_fit, options, [](const std::string&) {});
+  ASSERT_EQ(s.named, (std::vector<std::string>{"top_mount_amplitude_stiffening", "tyre_damping"}));
+  // The baseline, three single effects, two pairs with the accepted effect (round 2), the pair of
+  // the other two fitted jointly; round 3 does not run.
+  ASSERT_EQ(s.explanations.size(), 7u);
+  ASSERT_NE(explanation(s.explanations, {}), nullptr);
+  EXPECT_EQ(explanation(s.explanations, {})->training_cost, 100.0);
+  const Explanation* others = explanation(s.explanations, {"tyre_damping", "bump_stop"});
+  ASSERT_NE(others, nullptr);
+  EXPECT_EQ(others->training_cost, 33.0);
+  EXPECT_EQ(others->free_parameters, 4);  // tyre damping, the bump stop's two, the mass
+  EXPECT_EQ(others->residuals, 2000u);
+  std::vector<Explanation> weighed = s.explanations;
+  weigh_explanations(weighed);
+  EXPECT_EQ(weighed.front().effects,
+            (std::vector<std::string>{"top_mount_amplitude_stiffening", "tyre_damping"}));
+  EXPECT_GT(weighed.front().probability, 0.99);
+}
+
+TEST(EffectSelection, WithOneEffectAllowedTheAcceptedOneIsPairedToo) {
+  SelectionOptions options;
+  options.max_effects = 1;
+  options.threads = 1;
+  options.refine = false;
+  const Selection s =
+      select_effects(stick_passat_without_tyre_damping(), {"sprung_mass_kg"}, {}, three_effects(),
+                     additive_fit, options, [](const std::string&) {});
+  ASSERT_EQ(s.named, std::vector<std::string>{"top_mount_amplitude_stiffening"});
+  // Baseline, three singles, and the three pairs of the three significant effects.
+  EXPECT_EQ(s.explanations.size(), 7u);
+  const Explanation* pair =
+      explanation(s.explanations, {"tyre_damping", "top_mount_amplitude_stiffening"});
+  ASSERT_NE(pair, nullptr);
+  EXPECT_EQ(pair->training_cost, 25.0);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "ridefit/common/parallel_for.h"
 #include "ridefit/fitting/diagnose/damper_speed.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
+#include "ridefit/signal/welch_psd.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -117,6 +118,13 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
     return s;
   }
   s.held_out_cost = held_out->cost;
+  s.held_out_residuals = held_out->residuals;
+  double correlated = 0.0;
+  for (const auto& r : held_out->channel_residuals) {
+    correlated += correlation_time_samples(r) * static_cast<double>(r.size());
+  }
+  s.correlation_time =
+      correlated / static_cast<double>(std::max<std::size_t>(held_out->residuals, 1));
   s.held_out_signals = {held_out->body_acc_m_per_s2, held_out->wheel_acc_m_per_s2};
   s.held_out_gap = map_of(data.held_out, s.model.car, s.held_out_signals[0], s.held_out_signals[1],
                           options, map_options)
@@ -139,6 +147,39 @@ std::string describe(const DisagreementRegion& r) {
       r.above_band ? ", above the road's band" : "");
 }
 
+// Where the predictions of two explanations for the held-out record differ most: the channel and
+// frequency (within the fitted band) of the largest level difference between their spectra.
+std::string spectra_separation(const Explanation& a, const Explanation& b, double sample_rate_Hz,
+                               const DisagreementOptions& options) {
+  static const char* const kChannels[] = {"body_acc", "wheel_acc"};
+  signal::WelchOptions welch;
+  welch.segment_length_s = options.segment_s;
+  double largest = 0.0, at_Hz = 0.0;
+  std::string channel;
+  for (std::size_t c = 0; c < 2; ++c) {
+    if (c >= a.held_out_signals.size() || c >= b.held_out_signals.size() ||
+        a.held_out_signals[c].size() < 4 || b.held_out_signals[c].size() < 4) {
+      continue;
+    }
+    const auto pa = signal::welch_psd(a.held_out_signals[c], sample_rate_Hz, welch);
+    const auto pb = signal::welch_psd(b.held_out_signals[c], sample_rate_Hz, welch);
+    for (std::size_t k = 0; k < pa.psd.size() && k < pb.psd.size(); ++k) {
+      const double f = pa.frequency_Hz[k];
+      if (f < options.band_low_Hz || f > options.band_high_Hz) continue;
+      if (!(pa.psd[k] > 0.0) || !(pb.psd[k] > 0.0)) continue;
+      const double dB = 10.0 * std::log10(pa.psd[k] / pb.psd[k]);
+      if (std::abs(dB) > std::abs(largest)) {
+        largest = dB;
+        at_Hz = f;
+        channel = kChannels[c];
+      }
+    }
+  }
+  if (channel.empty()) return "";
+  return fmt::format("their predictions differ most in {} near {:.1f} Hz ({:+.1f} dB)", channel,
+                     at_Hz, largest);
+}
+
 }  // namespace
 
 DiagnosisData split_record(const PsdMeasurement& record) {
@@ -157,6 +198,8 @@ DiagnosisResult result_of(const Selection& selection, DataKind kind) {
   result.not_identifiable = selection.not_identifiable;
   result.final_model = selection.final_fit.model;
   result.final_parameters = selection.final_fit.values;
+  result.explanations = selection.explanations;
+  weigh_explanations(result.explanations);
   return result;
 }
 
@@ -252,7 +295,15 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   }
   std::vector<std::string> unexplained;
   for (const auto& region : result.unexplained) unexplained.push_back(describe(region));
-  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable);
+  if (const Explanation* chosen = find_explanation(result.explanations, result.named);
+      chosen && chosen->probability < kConfidentProbability) {
+    if (const Explanation* rival = strongest_rival(result.explanations, result.named)) {
+      result.separation =
+          spectra_separation(*chosen, *rival, data.held_out.sample_rate_Hz, map_options);
+    }
+  }
+  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable,
+                              evidence_words(result.explanations, result.named, result.separation));
   return result;
 }
 

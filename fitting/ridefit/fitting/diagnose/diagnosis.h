@@ -41,8 +41,15 @@ struct DiagnosisResult {
   std::vector<std::string> not_identifiable;
   DiagnosisModel final_model;  // the baseline with the named effects, refitted
   std::vector<FittedValue> final_parameters;
-  // "missing effect found: …", "no missing effect found", or the unexplained disagreement.
+  // "missing effect found: …", "no missing effect found", or the unexplained disagreement, with
+  // the named set's probability among the explanations.
   std::string verdict;
+  // Every explanation fitted (nothing missing, each effect, the pairs), weighed, most probable
+  // first (explanation_evidence.h).
+  std::vector<Explanation> explanations;
+  // What would separate the named set from its strongest rival, when the data cannot tell them
+  // apart ("" otherwise): where their predictions of the judging data differ most.
+  std::string separation;
   // Where the final fit put the values the baseline's data sheet was unsure of
   // (DiagnosisOptions::baseline_tolerances, LoopDiagnosisOptions::baseline_tolerances): a
   // finding in itself ("spring −7 % ± 2 %").

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "ridefit/fitting/diagnose/effect.h"
@@ -48,6 +49,55 @@ void write_rounds(std::ostream& out, const DiagnosisResult& result, const std::s
                                                  find_effect(round.accepted).description()))
         << "\n\n";
   }
+}
+
+void write_explanations(std::ostream& out, const DiagnosisResult& result) {
+  if (result.explanations.empty()) return;
+  out << "## How sure: the explanations weighed\n\n"
+         "Each explanation fitted on the way (nothing missing, each effect, the pairs of the first "
+         "round's significant effects fitted jointly), weighed by BIC on the training and judging "
+         "data together, counting one independent residual per correlation time of the best "
+         "fit's judging residual; probabilities with equal prior odds. Where screening fits are "
+         "coarser than the reported ones (spectra), the leading three are refitted as the "
+         "reported fits are before they are weighed.\n\n"
+         "| explanation | free | training cost | held-out cost | BIC | probability |\n"
+         "| --- | --- | --- | --- | --- | --- |\n";
+  const std::size_t shown = std::min<std::size_t>(result.explanations.size(), 10);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const Explanation& e = result.explanations[i];
+    out << fmt::format("| {} | {} | {:.4g} | {:.4g} | {:.1f} | {:.3f} |\n",
+                       explanation_name(e.effects), e.free_parameters, e.training_cost,
+                       e.held_out_cost, e.bic, e.probability);
+  }
+  if (shown < result.explanations.size()) {
+    out << fmt::format("\n({} more, each at most {:.3f}.)\n", result.explanations.size() - shown,
+                       result.explanations[shown].probability);
+  }
+  out << "\n";
+  out << fmt::format("Probability that {}: {:.3f} (every explanation above that contains {}).\n\n",
+                     result.named.empty() ? std::string("nothing is missing")
+                                          : explanation_name(result.named) + " is missing",
+                     named_probability(result.explanations, result.named),
+                     result.named.empty() ? std::string("no effect") : std::string("it"));
+  const Explanation* rival = strongest_rival(result.explanations, result.named);
+  if (rival && !result.separation.empty()) {
+    out << fmt::format("What separates it from the strongest rival, {} ({:.3f}): {}.\n\n",
+                       explanation_name(rival->effects), rival->probability, result.separation);
+  }
+}
+
+nlohmann::json explanations_json(const std::vector<Explanation>& explanations) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& e : explanations) {
+    j.push_back({{"effects", e.effects},
+                 {"probability", e.probability},
+                 {"bic", e.bic},
+                 {"free_parameters", e.free_parameters},
+                 {"training_cost", e.training_cost},
+                 {"held_out_cost", e.held_out_cost},
+                 {"correlation_time_samples", e.correlation_time}});
+  }
+  return j;
 }
 
 void write_sheet_values(std::ostream& out, const std::vector<DiagnosisResult::SheetValue>& values,

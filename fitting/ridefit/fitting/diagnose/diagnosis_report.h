@@ -25,6 +25,13 @@ void write_rounds(std::ostream& out, const DiagnosisResult& result, const std::s
 void write_sheet_values(std::ostream& out, const std::vector<DiagnosisResult::SheetValue>& values,
                         const std::string& how);
 
+// "How sure": every explanation fitted, most probable first, with its BIC and probability, and
+// what separates the named set from its rival when the data cannot tell them apart.
+void write_explanations(std::ostream& out, const DiagnosisResult& result);
+
+// The explanations as [{"effects": […], "probability": p, "bic": …, "free_parameters": k}, …].
+nlohmann::json explanations_json(const std::vector<Explanation>& explanations);
+
 nlohmann::json values_json(const std::vector<FittedValue>& values);
 
 nlohmann::json sheet_values_json(const std::vector<DiagnosisResult::SheetValue>& values);

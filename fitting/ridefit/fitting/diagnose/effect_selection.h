@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ridefit/fitting/diagnose/effect.h"
+#include "ridefit/fitting/diagnose/explanation_evidence.h"
 
 namespace ridefit::fitting::diagnose {
 
@@ -30,6 +31,9 @@ struct ScoredFit {
   std::size_t training_residuals = 0;
   double held_out_cost = 0.0;  // ½·Σ r² of the same residuals on the held-out data
   double held_out_gap = 0.0;   // the data kind's gap on the held-out data (dB, or NRMSE %)
+  std::size_t held_out_residuals = 0;
+  // Samples per independent residual on the held-out data (correlation_time_samples).
+  double correlation_time = 1.0;
   // The held-out simulation behind maps and figures (body and wheel accelerations, or each
   // record's force).
   std::vector<std::vector<double>> held_out_signals;
@@ -103,6 +107,11 @@ struct Selection {
   // Effects of the last round that the records could not identify, each "id not identifiable
   // from these records (…): needs …" (they are neither named nor ruled out).
   std::vector<std::string> not_identifiable;
+  // Every explanation fitted on the way, unweighed (weigh_explanations): the baseline, each
+  // round's trials (the effects named before it plus the trial's), and each pair of the first
+  // round's significant effects that the second round does not fit (neither is the one accepted),
+  // fitted jointly.
+  std::vector<Explanation> explanations;
 };
 
 // Fits the baseline's `free` parameters, then, round by round, tries each applicable effect of
@@ -127,10 +136,12 @@ Selection select_effects(const DiagnosisModel& baseline, std::vector<std::string
 // The verdict: "missing effect found: a, then b" for the physics named, "the measurement chain
 // differs: c" for the named effects of the measurement chain (Effect::measurement_chain), "no
 // missing effect found", and/or the first of the `unexplained` disagreements (described in words)
-// with how many more remain; then the effects the records could not identify.
+// with how many more remain; `evidence` (evidence_words: how probable the named set is) after the
+// named set; then the effects the records could not identify.
 std::string verdict_of(const std::vector<std::string>& named,
                        const std::vector<std::string>& unexplained,
-                       const std::vector<std::string>& not_identifiable = {});
+                       const std::vector<std::string>& not_identifiable = {},
+                       const std::string& evidence = "");
 
 // The effects to try: the whole library for an empty list, else those ids (InputError for an
 // unknown one).

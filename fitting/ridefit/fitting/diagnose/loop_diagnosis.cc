@@ -138,14 +138,19 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
     s.failure = "the fitted model cannot be solved on the held-out records";
     return s;
   }
-  double squares = 0.0;
+  double squares = 0.0, correlated = 0.0;
   for (std::size_t i = 0; i < forces->size(); ++i) {
-    for (std::size_t k = 0; k < (*forces)[i].size(); ++k) {
-      const double e = (*forces)[i][k] - data.held_out[i].force_N[k];
-      squares += e * e;
+    std::vector<double> residual((*forces)[i].size());
+    for (std::size_t k = 0; k < residual.size(); ++k) {
+      residual[k] = (*forces)[i][k] - data.held_out[i].force_N[k];
+      squares += residual[k] * residual[k];
     }
+    correlated += correlation_time_samples(residual) * static_cast<double>(residual.size());
+    s.held_out_residuals += residual.size();
   }
   s.held_out_cost = 0.5 * squares;
+  s.correlation_time =
+      correlated / static_cast<double>(std::max<std::size_t>(s.held_out_residuals, 1));
   s.held_out_signals = *forces;
   s.held_out_gap = force_nrmse_percent(data.held_out, *forces);
   return s;
@@ -159,6 +164,36 @@ std::string describe(const LoopRegion& r) {
       "({:+.1f} % of the force's RMS)",
       r.record, r.quantity, scale * r.low, scale * r.high, velocity ? "mm/s" : "mm",
       r.mean_residual_N, 100.0 * r.share);
+}
+
+// Where the predictions of two explanations for the held-out records differ most: the record,
+// its displacement and velocity (central differences) at the largest force difference.
+std::string loop_separation(const Explanation& a, const Explanation& b,
+                            const std::vector<HysteresisRecord>& held_out) {
+  double largest = 0.0;
+  std::size_t record = 0, sample = 0;
+  for (std::size_t i = 0; i < held_out.size(); ++i) {
+    if (i >= a.held_out_signals.size() || i >= b.held_out_signals.size()) break;
+    const auto& fa = a.held_out_signals[i];
+    const auto& fb = b.held_out_signals[i];
+    for (std::size_t k = 0; k < fa.size() && k < fb.size(); ++k) {
+      if (std::abs(fa[k] - fb[k]) > std::abs(largest)) {
+        largest = fa[k] - fb[k];
+        record = i;
+        sample = k;
+      }
+    }
+  }
+  if (largest == 0.0) return "";
+  const HysteresisRecord& r = held_out[record];
+  const std::size_t lo = sample > 0 ? sample - 1 : sample;
+  const std::size_t hi = std::min(sample + 1, r.time_s.size() - 1);
+  const double v =
+      hi > lo ? (r.displacement_m[hi] - r.displacement_m[lo]) / (r.time_s[hi] - r.time_s[lo]) : 0.0;
+  return fmt::format(
+      "their forces differ most on {} at {:.3g} mm, {:.3g} mm/s ({:+.0f} N): a test that "
+      "dwells there separates them",
+      r.source, 1e3 * r.displacement_m[sample], 1e3 * v, largest);
 }
 
 }  // namespace
@@ -247,7 +282,14 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
       unexplained.push_back(describe(region));
     }
   }
-  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable);
+  if (const Explanation* chosen = find_explanation(result.explanations, result.named);
+      chosen && chosen->probability < kConfidentProbability) {
+    if (const Explanation* rival = strongest_rival(result.explanations, result.named)) {
+      result.separation = loop_separation(*chosen, *rival, data.held_out);
+    }
+  }
+  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable,
+                              evidence_words(result.explanations, result.named, result.separation));
   return result;
 }
 

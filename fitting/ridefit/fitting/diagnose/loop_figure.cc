@@ -14,6 +14,9 @@ namespace ridefit::fitting::diagnose {
 io::Figure loop_figure(const DiagnosisResult& result, const LoopDiagnosisData& data) {
   io::Figure figure;
   figure.title = "measured against simulated (judging records): before and after";
+  if (const std::string p = leading_explanations(result.explanations); !p.empty()) {
+    figure.title += " (probabilities: " + p + ")";
+  }
   figure.columns = 2;
   for (std::size_t i = 0; i < data.held_out.size() && i < 2; ++i) {
     const auto& record = data.held_out[i];

@@ -82,6 +82,7 @@ void write_loop_report(std::ostream& out, const std::string& model_name,
     out << "The model with the effect added: `model.yaml` (its model keys; the rig-only gas "
            "force and load-cell offset are in its header comment).\n\n";
   }
+  write_explanations(out, result);
   write_sheet_values(out, result.sheet_values,
                      "freed in every fit within three of its tolerances of the sheet's value");
   if (!figure_file.empty()) {
@@ -100,6 +101,9 @@ nlohmann::json loop_summary_json(const DiagnosisResult& result) {
           {"baseline_parameters", values_json(result.baseline_parameters)},
           {"final_parameters", values_json(result.final_parameters)},
           {"sheet_values", sheet_values_json(result.sheet_values)},
+          {"explanations", explanations_json(result.explanations)},
+          {"named_probability", named_probability(result.explanations, result.named)},
+          {"separation", result.separation},
           {"rounds", rounds_json(result, "gap_nrmse_percent")}};
 }
 

@@ -41,6 +41,9 @@ void add_panels(io::Figure& figure, const DisagreementMap& map, const std::strin
 io::Figure spectra_figure(const DiagnosisResult& result) {
   io::Figure figure;
   figure.title = "measured against simulated (held-out record): before and after";
+  if (const std::string p = leading_explanations(result.explanations); !p.empty()) {
+    figure.title += " (probabilities: " + p + ")";
+  }
   figure.columns = 2;
   // Row by row: before | after per channel.
   for (std::size_t i = 0; i < result.before.channels.size(); ++i) {

@@ -109,6 +109,7 @@ void write_spectra_report(std::ostream& out, const std::string& model_name,
     out << "The model with the effect added: `model.yaml` (ready for simulate, fit and "
            "optimise).\n\n";
   }
+  write_explanations(out, result);
   write_sheet_values(out, result.sheet_values,
                      "freed in every fit with a Gaussian prior at the sheet's value (its "
                      "tolerance one standard deviation)");
@@ -131,6 +132,9 @@ nlohmann::json spectra_summary_json(const DiagnosisResult& result) {
           {"baseline_parameters", values_json(result.baseline_parameters)},
           {"final_parameters", values_json(result.final_parameters)},
           {"sheet_values", sheet_values_json(result.sheet_values)},
+          {"explanations", explanations_json(result.explanations)},
+          {"named_probability", named_probability(result.explanations, result.named)},
+          {"separation", result.separation},
           {"rounds", rounds_json(result, "gap_dB")}};
 }
 

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ridefit::fitting::diagnose {
+
+// How sure a diagnosis is: the candidate explanations it fitted (nothing missing, each effect,
+// each pair of the effects that passed screening, fitted jointly) weighed against each other by
+// the evidence of the training and the judging data together.
+
+struct Explanation {
+  std::vector<std::string> effects;  // in the order they were added; empty: nothing is missing
+  int free_parameters = 0;
+  double training_cost = 0.0;  // ½·Σ r² on the fitted data
+  double held_out_cost = 0.0;  // ½·Σ r² on the judging data, with the same parameters
+  std::size_t residuals = 0;   // training and judging residuals together
+  // Samples per independent residual of this fit on the judging data
+  // (correlation_time_samples): residuals of a model that misses something, and of a sampled
+  // force, are far from independent, and counting each as a datum makes any difference certain.
+  double correlation_time = 1.0;
+  double bic = 0.0;          // set by weigh_explanations
+  double probability = 0.0;  // set by weigh_explanations
+  // What it predicts for the judging data (the kind's held-out signals), for what separates two.
+  std::vector<std::vector<double>> held_out_signals;
+};
+
+// The integrated autocorrelation time of `residual` in samples: 1 + 2·Σρ_k, summed while the sum
+// of each pair of neighbouring lags stays positive (Geyer's initial positive sequence). 1 for
+// white noise, (1 + ρ)/(1 − ρ) for a first-order autoregression; at least 1, at most n.
+double correlation_time_samples(const std::vector<double>& residual);
+
+// Fills bic and probability. With N residuals, cost C = training + judging cost, k free
+// parameters and n = N/τ independent ones (τ: the correlation time of the explanation with the
+// lowest cost, the best stand-in for the noise), BIC = n·ln(2C/N) + k·ln n, and the
+// probabilities are BIC weights, exp(−BIC/2) normalised (equal prior odds). The judging data's
+// cost counts because its parameters were fitted without it: an effect that only fits the
+// training data's noise gains nothing there. Sorted most probable first.
+void weigh_explanations(std::vector<Explanation>& explanations);
+
+// "a + b", or "nothing missing".
+std::string explanation_name(const std::vector<std::string>& effects);
+
+// The explanation with exactly these effects (in any order), or nullptr.
+const Explanation* find_explanation(const std::vector<Explanation>& explanations,
+                                    const std::vector<std::string>& effects);
+
+// How probable it is that the `named` effects are missing: the summed probability of every
+// weighed explanation that contains them all (an explanation that adds a further effect to them
+// says they are missing too; the further effect may do next to nothing, a band limit above the
+// band). Nothing named: the probability that nothing is missing.
+double named_probability(const std::vector<Explanation>& weighed,
+                         const std::vector<std::string>& named);
+
+// The named set is what the selection decided (its tests on the judging data and BIC); below this
+// probability the verdict says which other explanation the data cannot tell it from.
+inline constexpr double kConfidentProbability = 0.9;
+
+// The verdict's words on the evidence for `named` among `weighed`: " (p = 0.93)"
+// (named_probability) when it is at least kConfidentProbability, else " (p = 0.52); a or b, the
+// data cannot tell them apart (0.52 / 0.44)" naming the strongest rival, followed by `separates`
+// (what would separate them, from the caller's data kind) when not empty. "" when no weighed
+// explanation contains the named effects.
+std::string evidence_words(const std::vector<Explanation>& weighed,
+                           const std::vector<std::string>& named,
+                           const std::string& separates = "");
+
+// The leading explanations for a figure's title: "free_play 0.97, nothing missing 0.03" (at most
+// `count`, most probable first); "" when nothing was weighed.
+std::string leading_explanations(const std::vector<Explanation>& weighed, std::size_t count = 3);
+
+// The most probable explanation that does not contain all the `named` effects (named empty: that
+// names any effect), or nullptr.
+const Explanation* strongest_rival(const std::vector<Explanation>& weighed,
+                                   const std::vector<std::string>& named);
+
+}  // namespace ridefit::fitting::diagnose

@@ -1,0 +1,128 @@
+// The weighing of a diagnosis's explanations: the correlation time against the closed form of a
+// first-order autoregression, BIC weights against their definition, and the verdict's words.
+#include "ridefit/fitting/diagnose/explanation_evidence.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace ridefit::fitting::diagnose {
+namespace {
+
+std::vector<double> autoregression(double rho, std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<double> r(n);
+  double x = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    x = rho * x + noise(rng);
+    r[k] = x;
+  }
+  return r;
+}
+
+TEST(ExplanationEvidence, CorrelationTimeOfAnAutoregressionIsItsClosedForm) {
+  // τ = (1 + ρ)/(1 − ρ): 1 for white noise, 19 for ρ = 0.9.
+  for (const double rho : {0.0, 0.5, 0.9}) {
+    const double expected = (1.0 + rho) / (1.0 - rho);
+    const double tau = correlation_time_samples(autoregression(rho, 200000, 7));
+    EXPECT_NEAR(tau, expected, 0.08 * expected) << "rho " << rho;
+  }
+}
+
+TEST(ExplanationEvidence, CorrelationTimeOfADegenerateResidualIsOne) {
+  EXPECT_EQ(correlation_time_samples({}), 1.0);
+  EXPECT_EQ(correlation_time_samples(std::vector<double>(100, 3.0)), 1.0);
+  // A slow sine: strongly correlated, but never more than the number of samples.
+  std::vector<double> sine(1000);
+  for (std::size_t k = 0; k < sine.size(); ++k) sine[k] = std::sin(1e-3 * static_cast<double>(k));
+  EXPECT_GT(correlation_time_samples(sine), 100.0);
+  EXPECT_LE(correlation_time_samples(sine), 1000.0);
+}
+
+Explanation candidate(std::vector<std::string> effects, int k, double cost, double tau = 1.0) {
+  Explanation e;
+  e.effects = std::move(effects);
+  e.free_parameters = k;
+  e.training_cost = cost;
+  e.held_out_cost = cost;
+  e.residuals = 2000;
+  e.correlation_time = tau;
+  return e;
+}
+
+TEST(ExplanationEvidence, WeightsAreBicWeightsOverTheIndependentResiduals) {
+  // τ = 10 on the best fit: n = 2000/10 = 200 independent residuals.
+  std::vector<Explanation> e{candidate({}, 2, 120.0, 30.0), candidate({"a"}, 3, 100.0, 10.0),
+                             candidate({"b"}, 3, 101.0, 12.0)};
+  weigh_explanations(e);
+  ASSERT_EQ(e.size(), 3u);
+  EXPECT_EQ(e[0].effects, std::vector<std::string>{"a"});
+  EXPECT_EQ(e[1].effects, std::vector<std::string>{"b"});
+  const double n = 200.0;
+  auto bic = [&](double cost, int k) {
+    return n * std::log(4.0 * cost / 2000.0) + k * std::log(n);
+  };
+  EXPECT_NEAR(e[0].bic, bic(100.0, 3), 1e-9);
+  const double ab = std::exp(-0.5 * (bic(101.0, 3) - bic(100.0, 3)));
+  const double an = std::exp(-0.5 * (bic(120.0, 2) - bic(100.0, 3)));
+  EXPECT_NEAR(e[0].probability, 1.0 / (1.0 + ab + an), 1e-12);
+  EXPECT_NEAR(e[1].probability, ab / (1.0 + ab + an), 1e-12);
+  EXPECT_NEAR(e[0].probability + e[1].probability + e[2].probability, 1.0, 1e-12);
+}
+
+TEST(ExplanationEvidence, AnExtraParameterThatFitsNothingMoreLoses) {
+  std::vector<Explanation> e{candidate({}, 2, 100.0), candidate({"a"}, 3, 100.0)};
+  weigh_explanations(e);
+  EXPECT_TRUE(e[0].effects.empty());
+  // Odds ln(n)/2 in BIC: √n to one for n = 2000.
+  EXPECT_NEAR(e[0].probability / e[1].probability, std::sqrt(2000.0), 1e-6 * std::sqrt(2000.0));
+}
+
+TEST(ExplanationEvidence, VerdictWordsSayHowSureAndWhatTheDataCannotTellApart) {
+  std::vector<Explanation> confident{candidate({}, 2, 150.0), candidate({"a"}, 3, 100.0)};
+  weigh_explanations(confident);
+  EXPECT_EQ(evidence_words(confident, {"a"}), " (p = 1.00)");
+  // Two that fit alike: the verdict names both and what separates them.
+  std::vector<Explanation> split{candidate({}, 2, 150.0), candidate({"a"}, 3, 100.0),
+                                 candidate({"b"}, 3, 100.05)};
+  weigh_explanations(split);
+  const std::string words = evidence_words(split, {"a"}, "they differ at 10 Hz");
+  EXPECT_NE(words.find("a or b, the data cannot tell them apart"), std::string::npos) << words;
+  EXPECT_NE(words.find(": they differ at 10 Hz"), std::string::npos) << words;
+  // Pairs are found in any order; a set that was never fitted has no words.
+  std::vector<Explanation> pair{candidate({"b", "a"}, 4, 50.0), candidate({}, 2, 150.0)};
+  weigh_explanations(pair);
+  EXPECT_NE(find_explanation(pair, {"a", "b"}), nullptr);
+  EXPECT_EQ(evidence_words(pair, {"c"}), "");
+  EXPECT_EQ(explanation_name({}), "nothing missing");
+  EXPECT_EQ(explanation_name({"a", "b"}), "a + b");
+  EXPECT_EQ(leading_explanations(pair, 1), "b + a 1.00");
+}
+
+TEST(ExplanationEvidence, ANamedEffectIsAsProbableAsEveryExplanationThatContainsIt) {
+  // "a" alone, "a" with a "b" that fits next to nothing more (√n to one against it), and "c"
+  // far behind: that "a" is missing is nearly certain though "a" alone holds only √n/(√n + 1).
+  std::vector<Explanation> e{candidate({"a"}, 3, 100.0), candidate({"a", "b"}, 4, 99.99),
+                             candidate({"c"}, 3, 130.0), candidate({}, 2, 150.0)};
+  weigh_explanations(e);
+  const Explanation* alone = find_explanation(e, {"a"});
+  const Explanation* with_b = find_explanation(e, {"a", "b"});
+  ASSERT_NE(alone, nullptr);
+  ASSERT_NE(with_b, nullptr);
+  EXPECT_LT(alone->probability, 0.99);
+  EXPECT_NEAR(named_probability(e, {"a"}), alone->probability + with_b->probability, 1e-12);
+  EXPECT_GT(named_probability(e, {"a"}), 0.999);
+  EXPECT_EQ(evidence_words(e, {"a"}), " (p = 1.00)");
+  // The rival is the strongest explanation without "a"; nothing named counts the empty one only.
+  ASSERT_NE(strongest_rival(e, {"a"}), nullptr);
+  EXPECT_EQ(strongest_rival(e, {"a"})->effects, std::vector<std::string>{"c"});
+  EXPECT_NEAR(named_probability(e, {}), find_explanation(e, {})->probability, 1e-15);
+  EXPECT_NEAR(named_probability(e, {"a", "b"}), with_b->probability, 1e-15);
+}
+
+}  // namespace
+}  // namespace ridefit::fitting::diagnose
