@@ -280,5 +280,22 @@ TEST(PsdFit, BadRequestsAreInputErrors) {
   EXPECT_THROW(fit_psd(m, car, options), InputError);
 }
 
+// A start an ulp beyond its bound (a previous fit's value on the bound, rescaled) is on the bound:
+// the diagnosis refits its leading explanations from their fitted values.
+TEST(PsdFit, AStartARoundingErrorBeyondItsBoundStartsOnIt) {
+  const auto m = measure(488000.0);
+  const model::QuarterCar car(model::DamperState::kStickSlip, testing::passat_corner().parameters);
+  const double k = car.parameters().top_mount_stiffness_N_per_m;
+  PsdFitOptions options;
+  options.free = {"top_mount_stiffness_N_per_m"};
+  options.max_iterations = 0;
+  options.bounds["top_mount_stiffness_N_per_m"] = {0.5 * k, std::nextafter(k, 0.0)};
+  const PsdFitResult r = fit_psd(m, car, options);
+  ASSERT_EQ(r.values.size(), 1u);
+  EXPECT_EQ(r.values[0], std::nextafter(k, 0.0));
+  options.bounds["top_mount_stiffness_N_per_m"] = {0.5 * k, 0.999 * k};  // truly outside
+  EXPECT_THROW(fit_psd(m, car, options), InputError);
+}
+
 }  // namespace
 }  // namespace ridefit::fitting

@@ -386,9 +386,14 @@ PsdSetup prepare(const PsdMeasurement& m, const model::QuarterCar& car,
   std::vector<std::pair<double, double>> bounds;
   std::vector<double> units;
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    const double v = field(start, fields[i]);
+    double v = field(start, fields[i]);
     std::pair<double, double> b{v / 10.0, v * 10.0};
     if (auto it = options.bounds.find(options.free[i]); it != options.bounds.end()) b = it->second;
+    // A start a rounding error outside a bound is on it: a fit that ended on the bound hands on
+    // its value rescaled (x·unit), which can land an ulp beyond it.
+    const double slack = 1e-12 * std::max(std::abs(b.first), std::abs(b.second));
+    if (v > b.second && v - b.second <= slack) v = b.second;
+    if (v < b.first && b.first - v <= slack) v = b.first;
     if (!(b.first < b.second) || !(v >= b.first && v <= b.second) || !(v > 0.0)) {
       throw InputError(
           fmt::format("{}: start {} must be > 0 and inside its bounds [{}, {}] (lower below upper)",
