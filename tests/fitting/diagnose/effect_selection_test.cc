@@ -93,11 +93,6 @@ std::vector<const Effect*> three_effects() {
           &find_effect("bump_stop")};
 }
 
-const Explanation* explanation(const std::vector<Explanation>& all,
-                               const std::vector<std::string>& effects) {
-  return find_explanation(all, effects);
-}
-
 TEST(EffectSelection, EveryExplanationIsFittedAndThePairsOfSignificantEffectsJointly) {
   SelectionOptions options;
   options.max_effects = 2;
@@ -110,9 +105,9 @@ TEST(EffectSelection, EveryExplanationIsFittedAndThePairsOfSignificantEffectsJoi
   // The baseline, three single effects, two pairs with the accepted effect (round 2), the pair of
   // the other two fitted jointly; round 3 does not run.
   ASSERT_EQ(s.explanations.size(), 7u);
-  ASSERT_NE(explanation(s.explanations, {}), nullptr);
-  EXPECT_EQ(explanation(s.explanations, {})->training_cost, 100.0);
-  const Explanation* others = explanation(s.explanations, {"tyre_damping", "bump_stop"});
+  ASSERT_NE(find_explanation(s.explanations, {}), nullptr);
+  EXPECT_EQ(find_explanation(s.explanations, {})->training_cost, 100.0);
+  const Explanation* others = find_explanation(s.explanations, {"tyre_damping", "bump_stop"});
   ASSERT_NE(others, nullptr);
   EXPECT_EQ(others->training_cost, 33.0);
   EXPECT_EQ(others->free_parameters, 4);  // tyre damping, the bump stop's two, the mass
@@ -136,7 +131,7 @@ TEST(EffectSelection, WithOneEffectAllowedTheAcceptedOneIsPairedToo) {
   // Baseline, three singles, and the three pairs of the three significant effects.
   EXPECT_EQ(s.explanations.size(), 7u);
   const Explanation* pair =
-      explanation(s.explanations, {"tyre_damping", "top_mount_amplitude_stiffening"});
+      find_explanation(s.explanations, {"tyre_damping", "top_mount_amplitude_stiffening"});
   ASSERT_NE(pair, nullptr);
   EXPECT_EQ(pair->training_cost, 25.0);
 }

@@ -110,7 +110,8 @@ struct Selection {
   // Every explanation fitted on the way, unweighed (weigh_explanations): the baseline, each
   // round's trials (the effects named before it plus the trial's), and each pair of the first
   // round's significant effects that the second round does not fit (neither is the one accepted),
-  // fitted jointly.
+  // fitted jointly; each at its lowest cost found, and with refine the three leading ones at the
+  // reported tolerance (the baseline and the named set are already).
   std::vector<Explanation> explanations;
 };
 

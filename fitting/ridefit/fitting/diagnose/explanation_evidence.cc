@@ -125,10 +125,9 @@ const Explanation* strongest_rival(const std::vector<Explanation>& weighed,
 
 std::string evidence_words(const std::vector<Explanation>& weighed,
                            const std::vector<std::string>& named, const std::string& separates) {
-  if (std::none_of(weighed.begin(), weighed.end(),
-                   [&](const Explanation& e) { return includes(e, named); })) {
-    return "";
-  }
+  const bool weighed_at_all = std::any_of(weighed.begin(), weighed.end(),
+                                          [&](const Explanation& e) { return includes(e, named); });
+  if (!weighed_at_all) return "";
   const double p = named_probability(weighed, named);
   std::string words = fmt::format(" (p = {:.2f})", p);
   if (p >= kConfidentProbability) return words;
