@@ -243,6 +243,13 @@ TEST(PsdFit, FivePercentSensorNoiseMovesTheFitLessThanTwoPercent) {
       const double with_change = with_floor.values[i] / reference.values[i] - 1.0;
       const double without_change = without_floor.values[i] / reference.values[i] - 1.0;
       EXPECT_LT(std::abs(with_change), 0.03) << options.free[i] << " seed " << seed;
+      // The noise's shift is inside the interval the fit reports (widened by √τ of its bins).
+      ASSERT_TRUE(with_floor.standard_errors[i].has_value());
+      EXPECT_LT(std::abs(with_floor.values[i] - reference.values[i]),
+                3.0 * *with_floor.standard_errors[i])
+          << options.free[i] << " seed " << seed;
+      std::printf("seed %u %s: ± %.3g (tau %.2f bins)\n", seed, options.free[i].c_str(),
+                  *with_floor.standard_errors[i], with_floor.residual_correlation_samples);
       mean_with[i] += with_change / kRealisations;
       mean_without[i] += without_change / kRealisations;
       std::printf("seed %u %s: noise-free %.6g, with floor %+.2f %%, without %+.2f %%\n", seed,

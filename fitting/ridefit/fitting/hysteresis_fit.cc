@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <system_error>
 #include <thread>
 #include <type_traits>
@@ -21,6 +22,7 @@
 #include "ridefit/fitting/hysteresis_prediction.h"
 #include "ridefit/fitting/integration_resolution.h"
 #include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/signal/correlation_time.h"
 
 namespace ridefit::fitting {
 namespace {
@@ -312,9 +314,27 @@ void assess_adequacy(const std::vector<HysteresisRecord>& records,
   result.adequacy_note = a.note;
 }
 
+// The residuals' correlation time in samples (signal::correlation_time_samples), each record's
+// own (its residual block, in record order) weighted by its length.
+double residual_correlation_samples(const std::vector<double>& residuals,
+                                    const std::vector<HysteresisRecord>& records) {
+  double weighted = 0.0;
+  std::size_t first = 0;
+  for (const auto& record : records) {
+    const std::size_t n = record.force_N.size();
+    if (first + n > residuals.size()) break;
+    weighted +=
+        signal::correlation_time_samples(std::span<const double>(residuals).subspan(first, n)) *
+        static_cast<double>(n);
+    first += n;
+  }
+  return first > 0 ? std::max(weighted / static_cast<double>(first), 1.0) : 1.0;
+}
+
 // The fit's uncertainty at its end: standard errors and correlations from ceres::Covariance
-// scaled by s² = 2·cost/(m − n), and the parameters the data leave undetermined (into
-// `result`). Returns the physical covariance of the blocks, none when it is not computable.
+// scaled by s² = 2·cost/(m − n) and by the residuals' correlation time, and the parameters the data
+// leave undetermined (into `result`). Returns the physical covariance of the blocks, none when it
+// is not computable.
 std::optional<Eigen::MatrixXd> assess_uncertainty(
     ceres::Problem& problem, double final_cost, const std::string& solver_message,
     const std::vector<Block>& blocks, std::vector<double>& values, const std::vector<double>& units,
@@ -325,7 +345,8 @@ std::optional<Eigen::MatrixXd> assess_uncertainty(
   // Identifiability: the Jacobian with each column scaled by its parameter's size.
   ceres::CRSMatrix crs;
   double cost = 0.0;
-  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, nullptr, nullptr, &crs) ||
+  std::vector<double> residuals;
+  if (!problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &residuals, nullptr, &crs) ||
       crs.num_rows == 0 || crs.num_cols == 0) {
     throw RunError(fmt::format(
         "fit: the strut model cannot be solved with its derivatives at the fit's end ({}); try "
@@ -433,7 +454,12 @@ std::optional<Eigen::MatrixXd> assess_uncertainty(
         weak.size() > 1 ? "some of them" : "it", weak.size() > 1 ? "them" : "it");
   }
   if (!have_covariance) return std::nullopt;
-  return cov;
+  // s²·(JᵀJ)⁻¹ holds for independent residuals. A force residual is correlated over many samples
+  // (the misfit of a loop, a sampled record's smoothness): with τ samples per independent value
+  // the variance of the estimates is about τ times larger, so the errors are widened by √τ (the
+  // identifiability above judges the Jacobian, with independent residuals).
+  result.residual_correlation_samples = residual_correlation_samples(residuals, records);
+  return cov * result.residual_correlation_samples;
 }
 
 }  // namespace

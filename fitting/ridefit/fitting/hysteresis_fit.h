@@ -29,6 +29,9 @@ struct HysteresisFitResult {
   double initial_cost = 0.0;
   double final_cost = 0.0;  // ½·Σ r²
   double residual_rms_N = 0.0;
+  // Samples per independent residual at the end (signal::correlation_time_samples, pooled over
+  // the records): the standard errors are widened by its square root.
+  double residual_correlation_samples = 1.0;
   int iterations = 0;
   bool converged = false;
   std::string termination;  // Ceres' own words
@@ -54,7 +57,8 @@ struct HysteresisFitResult {
 // Fits the free strut-test parameters to one or several records at once by nonlinear least
 // squares (Ceres, Levenberg-Marquardt within bounds) on the force residuals. The Jacobian is
 // exact: Jets run through the implicit solver (strut_test_response.h). Standard errors come
-// from ceres::Covariance, scaled by the residual variance s² = 2·cost/(m − n). InputError for
+// from ceres::Covariance, scaled by the residual variance s² = 2·cost/(m − n) and by the
+// residuals' correlation time τ (m/τ independent residuals). InputError for
 // an unknown or repeated parameter, a per-file parameter that is not free, bounds with
 // lower >= upper, or a start outside its bounds; RunError when the model cannot be solved at
 // the start.

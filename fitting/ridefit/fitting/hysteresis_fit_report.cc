@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <utility>
 
 #include "ridefit/common/errors.h"
@@ -64,6 +65,14 @@ void write_summary(std::ostream& out, const HysteresisFitResult& fit,
                        p.standard_error ? fmt::format("{:.3g}", *p.standard_error) : "-",
                        p.file.empty() ? "" : "  " + p.file);
   }
+  const bool any_error = std::any_of(fit.parameters.begin(), fit.parameters.end(),
+                                     [](const FittedParameter& p) { return p.standard_error; });
+  if (any_error && fit.residual_correlation_samples > 1.0) {
+    out << fmt::format(
+        "  (± one standard error, widened by √τ: the residuals are correlated over τ = {:.3g} "
+        "samples)\n",
+        fit.residual_correlation_samples);
+  }
   if (report.sources.size() > 1) {
     for (std::size_t r = 0; r < report.sources.size() && r < fit.record_nrmse_percent.size(); ++r) {
       out << fmt::format("  NRMSE {:6.2f} %  {}\n", fit.record_nrmse_percent[r], report.sources[r]);
@@ -104,6 +113,7 @@ nlohmann::json summary_json(const HysteresisFitResult& fit, const HysteresisFitR
                       {"initial_cost", fit.initial_cost},
                       {"final_cost", fit.final_cost},
                       {"residual_rms_N", fit.residual_rms_N},
+                      {"residual_correlation_samples", fit.residual_correlation_samples},
                       {"nrmse_percent", fit.nrmse_percent},
                       {"explains_data", fit.explains_data},
                       {"adequacy_note", fit.adequacy_note},

@@ -11,6 +11,7 @@
 #include <complex>
 #include <memory>
 #include <set>
+#include <span>
 #include <tuple>
 #include <unsupported/Eigen/FFT>
 
@@ -22,6 +23,7 @@
 #include "ridefit/model/quarter_car_parameter_table.h"
 #include "ridefit/road/excitation_file.h"
 #include "ridefit/road/measured_road.h"
+#include "ridefit/signal/correlation_time.h"
 #include "ridefit/signal/equivalent_dof.h"
 #include "ridefit/signal/hann_window.h"
 #include "ridefit/signal/noise_floor.h"
@@ -342,6 +344,18 @@ struct PsdSetup {
   double bin_sd = 1.0;    // √ψ′(ν/2): the standard deviation of a bin's log-estimate
 };
 
+// The correlation time of a fit's bin residuals (body bins first, then wheel), each channel's
+// own weighted by its bins.
+double channel_correlation_samples(const std::vector<double>& residuals, std::size_t body_bins) {
+  const std::span<const double> all(residuals);
+  const std::size_t split = std::min(body_bins, all.size());
+  double weighted = 0.0;
+  for (const auto part : {all.first(split), all.subspan(split)}) {
+    weighted += signal::correlation_time_samples(part) * static_cast<double>(part.size());
+  }
+  return all.empty() ? 1.0 : std::max(weighted / static_cast<double>(all.size()), 1.0);
+}
+
 // A data sheet's Gaussian prior on a parameter block x = p/unit: s·(x·unit − mean)/sd, in the
 // units of the bins' residuals (PsdFitOptions::priors).
 struct PriorResidual {
@@ -613,6 +627,17 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
         }
       }
     }
+    // Neighbouring bins and a spectrum's misfit are correlated: the errors are widened by √τ of
+    // each channel's residuals (the identifiability below judges independent bins).
+    if (have) {
+      std::vector<double> residuals(static_cast<std::size_t>(cost->num_residuals()));
+      const std::vector<const double*> at(blocks.begin(), blocks.end());
+      if (cost->Evaluate(at.data(), residuals.data(), nullptr)) {
+        result.residual_correlation_samples =
+            channel_correlation_samples(residuals, setup.body_log.size());
+      }
+    }
+    const double widen = result.residual_correlation_samples;
     result.fitted = car.parameters();
     std::set<std::size_t> weak;
     for (std::size_t i = 0; i < fields.size(); ++i) {
@@ -621,7 +646,7 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
       field(result.fitted, fields[i]) = value;
       const auto a = static_cast<Eigen::Index>(i);
       if (have) {
-        result.standard_errors.push_back(std::sqrt(cov(a, a)));
+        result.standard_errors.push_back(std::sqrt(widen * cov(a, a)));
         // The same rules as the hysteresis fit: SE above half the value, or |ρ| > 0.995.
         if (std::sqrt(cov(a, a)) > 0.5 * std::abs(value)) weak.insert(i);
         for (Eigen::Index b = a + 1; b < k; ++b) {

@@ -56,6 +56,9 @@ struct PsdFitResult {
   std::vector<std::string> unidentifiable;
   std::string identifiability_note;
   double final_cost = 0.0;
+  // Bins per independent residual at the end (signal::correlation_time_samples, each channel's
+  // own pooled): the standard errors are widened by its square root.
+  double residual_correlation_samples = 1.0;
   int iterations = 0;
   bool converged = false;
   std::string termination;
@@ -80,7 +83,8 @@ struct PsdFitResult {
 // simulation runs the measured road through quarter_car_accelerations (adaptive ESDIRK; with Jets,
 // the tangents of its frozen step sequence), and the PSD's derivatives follow from the FFT's
 // linearity (dP = 2·Re(X̄·dX) per segment), so the Jacobian is exact. Standard errors from the
-// Jacobian at the optimum, scaled by the residual variance. The cost function fit_psd hands to
+// Jacobian at the optimum, scaled by the residual variance and the bins' correlation time (the
+// errors widened by √τ). The cost function fit_psd hands to
 // Ceres (log-PSD residuals of the band, one parameter block of size 1 per free parameter in units
 // of its start value, so 1.0 is the model's value), exposed for the gradient check. The caller owns
 // it; `measurement` and `car` must outlive it.

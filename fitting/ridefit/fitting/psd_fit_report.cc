@@ -2,6 +2,9 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <optional>
+
 #include "ridefit/fitting/fit_json.h"
 
 namespace ridefit::fitting {
@@ -17,6 +20,14 @@ void write_summary(std::ostream& out, const std::string& source, const PsdFitRes
         "  {:<30} {:>14.6g}  ± {}\n", fit.names[i], fit.values[i],
         fit.standard_errors[i] ? fmt::format("{:.3g}", *fit.standard_errors[i]) : "-");
   }
+  const bool any_error = std::any_of(fit.standard_errors.begin(), fit.standard_errors.end(),
+                                     [](const std::optional<double>& e) { return e.has_value(); });
+  if (any_error && fit.residual_correlation_samples > 1.0) {
+    out << fmt::format(
+        "  (± one standard error, widened by √τ: the bins' residuals are correlated over τ = "
+        "{:.3g} bins)\n",
+        fit.residual_correlation_samples);
+  }
   if (!fit.identifiability_note.empty()) out << "warning: " << fit.identifiability_note << "\n";
   for (const auto& bound : adequacy.on_bounds) out << "  on a bound: " << bound << "\n";
 }
@@ -27,6 +38,7 @@ nlohmann::json summary_json(const PsdFitResult& fit, const FitAdequacy& adequacy
       {"termination", fit.termination},
       {"iterations", fit.iterations},
       {"final_cost", fit.final_cost},
+      {"residual_correlation_samples", fit.residual_correlation_samples},
       {"unidentifiable", fit.unidentifiable},
       {"identifiability_note", fit.identifiability_note},
       {"nrmse_percent", adequacy.nrmse_percent},

@@ -11,6 +11,7 @@
 #include "ridefit/common/parallel_for.h"
 #include "ridefit/fitting/diagnose/damper_speed.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
+#include "ridefit/signal/correlation_time.h"
 #include "ridefit/signal/welch_psd.h"
 
 namespace ridefit::fitting::diagnose {
@@ -121,7 +122,7 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   s.held_out_residuals = held_out->residuals;
   double correlated = 0.0;
   for (const auto& r : held_out->channel_residuals) {
-    correlated += correlation_time_samples(r) * static_cast<double>(r.size());
+    correlated += signal::correlation_time_samples(r) * static_cast<double>(r.size());
   }
   s.correlation_time =
       correlated / static_cast<double>(std::max<std::size_t>(held_out->residuals, 1));

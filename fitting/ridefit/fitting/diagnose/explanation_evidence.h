@@ -17,19 +17,15 @@ struct Explanation {
   double held_out_cost = 0.0;  // ½·Σ r² on the judging data, with the same parameters
   std::size_t residuals = 0;   // training and judging residuals together
   // Samples per independent residual of this fit on the judging data
-  // (correlation_time_samples): residuals of a model that misses something, and of a sampled
-  // force, are far from independent, and counting each as a datum makes any difference certain.
+  // (signal::correlation_time_samples): residuals of a model that misses something, and of a
+  // sampled force, are far from independent, and counting each as a datum makes any difference
+  // certain.
   double correlation_time = 1.0;
   double bic = 0.0;          // set by weigh_explanations
   double probability = 0.0;  // set by weigh_explanations
   // What it predicts for the judging data (the kind's held-out signals), for what separates two.
   std::vector<std::vector<double>> held_out_signals;
 };
-
-// The integrated autocorrelation time of `residual` in samples: 1 + 2·Σρ_k, summed while the sum
-// of each pair of neighbouring lags stays positive (Geyer's initial positive sequence). 1 for
-// white noise, (1 + ρ)/(1 − ρ) for a first-order autoregression; at least 1, at most n.
-double correlation_time_samples(const std::vector<double>& residual);
 
 // Fills bic and probability. With N residuals, cost C = training + judging cost, k free
 // parameters and n = N/τ independent ones (τ: the correlation time of the explanation with the

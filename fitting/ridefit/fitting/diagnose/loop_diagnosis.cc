@@ -11,6 +11,7 @@
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
+#include "ridefit/signal/correlation_time.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -145,7 +146,7 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
       residual[k] = (*forces)[i][k] - data.held_out[i].force_N[k];
       squares += residual[k] * residual[k];
     }
-    correlated += correlation_time_samples(residual) * static_cast<double>(residual.size());
+    correlated += signal::correlation_time_samples(residual) * static_cast<double>(residual.size());
     s.held_out_residuals += residual.size();
   }
   s.held_out_cost = 0.5 * squares;
