@@ -41,5 +41,22 @@ TEST(CorrelationTime, OfADegenerateSeriesIsOne) {
   EXPECT_LE(correlation_time_samples(sine), 1000.0);
 }
 
+// Two records of white noise about different levels: each alone is uncorrelated, the series
+// joined is not (its level steps once). Pooled by parts, τ is the parts' own, weighted by length.
+TEST(CorrelationTime, PooledOverPartsIgnoresTheirJoins) {
+  auto first = autoregression(0.0, 20000, 11);
+  const auto second = autoregression(0.9, 10000, 12);
+  std::vector<double> joined = first;
+  for (double v : second) joined.push_back(v + 50.0);
+  const std::size_t lengths[] = {first.size(), second.size()};
+  const double expected = (20000.0 * 1.0 + 10000.0 * 19.0) / 30000.0;  // 7
+  EXPECT_NEAR(pooled_correlation_time_samples(joined, lengths), expected, 0.1 * expected);
+  EXPECT_GT(correlation_time_samples(joined), 100.0);
+  // A length beyond the series leaves that part out; no parts: 1.
+  const std::size_t too_long[] = {first.size(), 2 * second.size()};
+  EXPECT_NEAR(pooled_correlation_time_samples(joined, too_long), 1.0, 0.1);
+  EXPECT_EQ(pooled_correlation_time_samples(joined, {}), 1.0);
+}
+
 }  // namespace
 }  // namespace ridefit::signal

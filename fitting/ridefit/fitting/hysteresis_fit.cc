@@ -12,7 +12,6 @@
 #include <memory>
 #include <optional>
 #include <set>
-#include <span>
 #include <system_error>
 #include <thread>
 #include <type_traits>
@@ -314,23 +313,6 @@ void assess_adequacy(const std::vector<HysteresisRecord>& records,
   result.adequacy_note = a.note;
 }
 
-// The residuals' correlation time in samples (signal::correlation_time_samples), each record's
-// own (its residual block, in record order) weighted by its length.
-double residual_correlation_samples(const std::vector<double>& residuals,
-                                    const std::vector<HysteresisRecord>& records) {
-  double weighted = 0.0;
-  std::size_t first = 0;
-  for (const auto& record : records) {
-    const std::size_t n = record.force_N.size();
-    if (first + n > residuals.size()) break;
-    weighted +=
-        signal::correlation_time_samples(std::span<const double>(residuals).subspan(first, n)) *
-        static_cast<double>(n);
-    first += n;
-  }
-  return first > 0 ? std::max(weighted / static_cast<double>(first), 1.0) : 1.0;
-}
-
 // The fit's uncertainty at its end: standard errors and correlations from ceres::Covariance
 // scaled by s² = 2·cost/(m − n) and by the residuals' correlation time, and the parameters the data
 // leave undetermined (into `result`). Returns the physical covariance of the blocks, none when it
@@ -458,7 +440,9 @@ std::optional<Eigen::MatrixXd> assess_uncertainty(
   // (the misfit of a loop, a sampled record's smoothness): with τ samples per independent value
   // the variance of the estimates is about τ times larger, so the errors are widened by √τ (the
   // identifiability above judges the Jacobian, with independent residuals).
-  result.residual_correlation_samples = residual_correlation_samples(residuals, records);
+  std::vector<std::size_t> lengths;  // the residual blocks, one per record in order
+  for (const auto& record : records) lengths.push_back(record.force_N.size());
+  result.residual_correlation_samples = signal::pooled_correlation_time_samples(residuals, lengths);
   return cov * result.residual_correlation_samples;
 }
 

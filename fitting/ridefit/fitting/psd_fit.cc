@@ -11,7 +11,6 @@
 #include <complex>
 #include <memory>
 #include <set>
-#include <span>
 #include <tuple>
 #include <unsupported/Eigen/FFT>
 
@@ -344,18 +343,6 @@ struct PsdSetup {
   double bin_sd = 1.0;    // √ψ′(ν/2): the standard deviation of a bin's log-estimate
 };
 
-// The correlation time of a fit's bin residuals (body bins first, then wheel), each channel's
-// own weighted by its bins.
-double channel_correlation_samples(const std::vector<double>& residuals, std::size_t body_bins) {
-  const std::span<const double> all(residuals);
-  const std::size_t split = std::min(body_bins, all.size());
-  double weighted = 0.0;
-  for (const auto part : {all.first(split), all.subspan(split)}) {
-    weighted += signal::correlation_time_samples(part) * static_cast<double>(part.size());
-  }
-  return all.empty() ? 1.0 : std::max(weighted / static_cast<double>(all.size()), 1.0);
-}
-
 // A data sheet's Gaussian prior on a parameter block x = p/unit: s·(x·unit − mean)/sd, in the
 // units of the bins' residuals (PsdFitOptions::priors).
 struct PriorResidual {
@@ -633,8 +620,10 @@ PsdFitResult fit_psd(const PsdMeasurement& m, const model::QuarterCar& given_car
       std::vector<double> residuals(static_cast<std::size_t>(cost->num_residuals()));
       const std::vector<const double*> at(blocks.begin(), blocks.end());
       if (cost->Evaluate(at.data(), residuals.data(), nullptr)) {
+        // body bins first, then wheel (either may be absent)
+        const std::size_t lengths[] = {setup.body_log.size(), setup.wheel_log.size()};
         result.residual_correlation_samples =
-            channel_correlation_samples(residuals, setup.body_log.size());
+            signal::pooled_correlation_time_samples(residuals, lengths);
       }
     }
     const double widen = result.residual_correlation_samples;

@@ -28,4 +28,16 @@ double correlation_time_samples(std::span<const double> r) {
   return std::clamp(2.0 * sum - 1.0, 1.0, static_cast<double>(n));
 }
 
+double pooled_correlation_time_samples(std::span<const double> series,
+                                       std::span<const std::size_t> lengths) {
+  double weighted = 0.0;
+  std::size_t first = 0;
+  for (const std::size_t n : lengths) {
+    if (first + n > series.size()) break;
+    weighted += correlation_time_samples(series.subspan(first, n)) * static_cast<double>(n);
+    first += n;
+  }
+  return first > 0 ? std::max(weighted / static_cast<double>(first), 1.0) : 1.0;
+}
+
 }  // namespace ridefit::signal
