@@ -257,21 +257,21 @@ TEST(HysteresisFit, ConfidenceIntervalsCoverTheTruthUnderCorrelatedNoise) {
   }
 }
 
-// The Jacobian Ceres receives (Jets through the implicit solver) against central differences
-// of the same residuals, every residual and parameter; entries compared on the scale of their
-// column (most entries are exactly or nearly zero while the damper sticks).
-TEST(HysteresisFit, GradientCheckAgainstCentralDifferences) {
-  const auto data = triangle(truth(), 1);
+// `coulomb_tolerance`: for the column of Fc (every other column is held to 1e-5 of its scale).
+void check_gradient(double exponent, double coulomb_tolerance = 1e-5) {
+  auto p = truth();
+  p.dahl_exponent = exponent;
+  const auto data = triangle(p, 1);
   const std::vector<std::string> free = {"dahl_sigma0_N_per_m", "coulomb_force_N", "dahl_exponent",
                                          "top_mount_stiffness_N_per_m", "damping_Ns_per_m"};
   // Central differences of the discrete map the Jacobian belongs to: the base run's steps,
   // frozen (strut_test_response.h).
   simulate::StrutTestSolverOptions solver;
   solver.interpolation = kTriangle;
-  const auto steps = simulate::strut_test_steps(data.time_s, data.displacement_m, truth(), solver);
+  const auto steps = simulate::strut_test_steps(data.time_s, data.displacement_m, p, solver);
   solver.frozen_steps = &steps;
-  std::unique_ptr<ceres::CostFunction> cost(make_hysteresis_cost(data, truth(), free, solver));
-  double values[5] = {5e6, 60.0, 1.0, 488000.0, 887.0};
+  std::unique_ptr<ceres::CostFunction> cost(make_hysteresis_cost(data, p, free, solver));
+  double values[5] = {5e6, 60.0, exponent, 488000.0, 887.0};
   const std::size_t m = data.force_N.size();
   std::vector<double> residuals(m);
   std::vector<std::vector<double>> jacobian(5, std::vector<double>(m));
@@ -289,15 +289,35 @@ TEST(HysteresisFit, GradientCheckAgainstCentralDifferences) {
     ASSERT_TRUE(cost->Evaluate(blocks.data(), down.data(), nullptr));
     values[j] = saved;
     double scale = 0.0, worst = 0.0;
+    std::size_t worst_k = 0;
     for (std::size_t k = 0; k < m; ++k) {
       const double numeric = (up[k] - down[k]) / (2.0 * step);
       scale = std::max(scale, std::abs(jacobian[j][k]));
-      worst = std::max(worst, std::abs(numeric - jacobian[j][k]));
+      if (std::abs(numeric - jacobian[j][k]) > worst) {
+        worst = std::abs(numeric - jacobian[j][k]);
+        worst_k = k;
+      }
     }
     EXPECT_GT(scale, 0.0) << free[j];
-    EXPECT_LT(worst, 1e-5 * scale) << free[j];
+    EXPECT_LT(worst, (j == 1 ? coulomb_tolerance : 1e-5) * scale)
+        << free[j] << " at sample " << worst_k << " (t " << data.time_s[worst_k] << " s): exact "
+        << jacobian[j][worst_k];
   }
 }
+
+// The Jacobian Ceres receives (Jets through the implicit solver) against central differences
+// of the same residuals, every residual and parameter; entries compared on the scale of their
+// column (most entries are exactly or nearly zero while the damper sticks).
+TEST(HysteresisFit, GradientCheckAgainstCentralDifferences) { check_gradient(1.0); }
+
+// Below 1 the law's slope is unbounded at the sliding level, which the element reaches in finite
+// time and where it then sits (s = 0 exactly, scalar_math.h): there the frozen map is not
+// differentiable on the scale of a difference step, and the tangent, with the secant slope over
+// one rounding step, follows F = Fc to within 1 % of Fc's column (measured 0.8 %; a zero slope
+// froze it at 0.5 against the differences' 1). The other columns are held to 1e-5.
+TEST(HysteresisFit, GradientCheckWithADahlExponentBelowOne) { check_gradient(0.9, 0.01); }
+
+TEST(HysteresisFit, GradientCheckWithADahlExponentAboveOne) { check_gradient(1.4); }
 
 }  // namespace
 }  // namespace ridefit::fitting

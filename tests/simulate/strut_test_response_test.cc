@@ -109,9 +109,10 @@ TEST(StrutTestResponse, DerivativesMatchCentralDifferencesOnFrozenSteps) {
 }
 
 // The strut system's hand-written Jacobian against autodiff of the templated model, on and off
-// the sliding branches, with the Stribeck level and a Dahl exponent other than 1.
+// the sliding branches, with the Stribeck level and Dahl exponents other than 1, and at the
+// sliding level itself (F = ±Fc, s = 0 exactly, where d < 1 takes the secant slope).
 TEST(StrutTestSystem, JacobianMatchesAutodiffOfTheModel) {
-  for (const double d : {1.0, 1.6}) {
+  for (const double d : {1.0, 1.6, 0.9}) {
     for (const double vs : {0.0, 0.004}) {
       auto p = passat_strut();
       p.dahl_exponent = d;
@@ -122,7 +123,8 @@ TEST(StrutTestSystem, JacobianMatchesAutodiffOfTheModel) {
       for (const double ti : t) x.push_back(displacement(ti));
       const RigDisplacement rig(t, x);
       const StrutTestSystem system(p, rig);
-      for (const double f : {-75.0, -30.0, 0.0, 45.0, 59.0, 80.0}) {
+      const double fc = p.coulomb_force_N;
+      for (const double f : {-75.0, -30.0, 0.0, 45.0, 59.0, 80.0, fc, -fc}) {
         for (const double zc : {-0.002, 0.0, 0.0011}) {
           const double y[2] = {zc, f};
           double j[4];

@@ -36,19 +36,40 @@ bool held_at_one(const E& d) {
 // sgn(s) * |s|^d for d > 0, with an exact zero at s = 0, where log|s| would be -inf. There the
 // derivative with respect to d is 0 by continuity, and the one with respect to s is that of the
 // power: 1 for d = 1 (s itself is returned, so tangents pass through: the Dahl element sits at
-// exactly s = 0 while it slides, F = ±Fc, and the fits differentiate through it), 0 for d > 1
-// and unbounded for d < 1 (0 is kept: a one-sided choice).
+// exactly s = 0 while it slides, F = ±Fc, and the fits differentiate through it) and 0 for d > 1.
+// For d < 1 it is unbounded, and that matters: the Dahl element then reaches its sliding level in
+// finite time and sits at s = 0 exactly, F pinned to the level (∂F/∂Fc = 1). A zero slope there
+// froze the tangent of F at the value it had on arrival (0.5 where central differences give 1).
+// The secant over the smallest step s takes next to 0 in
+// doubles, ε^(d−1) (ε = 2^-52: s = 1 − F/Fc moves by ε/2 … ε there; 36 for d = 0.9), stands for
+// it: the tangent then follows the level's to within 1 %. A larger slope (1/ε) pins it exactly
+// but makes the slope jump by 14 decades between s = 0 and the next double, and a stage whose s
+// rounds differently in the Jacobian and in the residual then blew the tangent up.
+inline constexpr double kLogSignedPowerZeroStep = -36.04365338911715;  // log(2^-52)
+
 template <typename T, typename E>
 T signed_power(const T& s, const E& d) {
   using std::abs;
   using std::exp;
   using std::log;
-  if (s == 0.0) return d == 1.0 ? s : T(0.0);
+  if (s == 0.0) {
+    if (d == 1.0) return s;
+    if (d > 1.0) return T(0.0);
+    return s * exp((d - 1.0) * kLogSignedPowerZeroStep);
+  }
   // The common d = 1 without exp and log, when d carries no derivative (a double, or a Jet of
   // an exponent the fit holds: the Dahl shape of every MR fit, evaluated at each stage).
   if (held_at_one(d)) return s;
   const T magnitude = exp(d * log(abs(s)));
   return s < 0.0 ? T(-magnitude) : magnitude;
+}
+
+// d/ds of signed_power at s = 0 in doubles, with the same choice (1; 0 for d > 1; ε^(d−1) for
+// d < 1): for Jacobians written out by hand, which must agree with the tangents the law gives in
+// Jets.
+inline double signed_power_slope_at_zero(double d) {
+  if (d == 1.0) return 1.0;
+  return d > 1.0 ? 0.0 : std::exp((d - 1.0) * kLogSignedPowerZeroStep);
 }
 
 }  // namespace ridefit::model

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ridefit/model/scalar_math.h"
+
 namespace ridefit::simulate {
 
 RigDisplacement::RigDisplacement(std::span<const double> time_s,
@@ -162,7 +164,8 @@ bool StrutTestSystem::jacobian(double t_s, const double* y, double* jacobian_col
     if (p_.dahl_exponent != 1.0) {
       const double magnitude = s == 0.0 ? 0.0 : std::pow(std::abs(s), p_.dahl_exponent);
       power = s < 0.0 ? -magnitude : magnitude;
-      slope = s == 0.0 ? 0.0 : p_.dahl_exponent * magnitude / std::abs(s);
+      slope = s == 0.0 ? model::signed_power_slope_at_zero(p_.dahl_exponent)
+                       : p_.dahl_exponent * magnitude / std::abs(s);
     }
     // s moves with F directly and, through the level, with v: ds/dv = (F·sgn v / L²)·dL/dv.
     const double ds_df = -sign / level;
