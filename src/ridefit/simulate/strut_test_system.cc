@@ -93,6 +93,14 @@ double RigDisplacement::interpolate(double time_s) const {
 }
 
 double RigDisplacement::rate_at(double time_s) const {
+  if (time_s != cached_rate_time_s_) {
+    cached_rate_m_per_s_ = interpolate_rate(time_s);
+    cached_rate_time_s_ = time_s;
+  }
+  return cached_rate_m_per_s_;
+}
+
+double RigDisplacement::interpolate_rate(double time_s) const {
   if (exact_m_) {
     // Central difference of a smooth function: h = 1e-5 s leaves ~1e-10 relative error.
     const double h = 1e-5;

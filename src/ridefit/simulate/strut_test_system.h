@@ -47,10 +47,14 @@ class RigDisplacement {
 
  private:
   double interpolate(double time_s) const;
-  // Newton iterations ask for one stage time again and again. One RigDisplacement serves one
-  // integration (not shared between threads).
+  double interpolate_rate(double time_s) const;
+  // Newton iterations and the Jacobian ask for one stage time again and again (the spline's
+  // slope alone took an eighth of a loop diagnosis). One RigDisplacement serves one integration
+  // (not shared between threads).
   mutable double cached_time_s_ = -1e300;
   mutable double cached_m_ = 0.0;
+  mutable double cached_rate_time_s_ = -1e300;
+  mutable double cached_rate_m_per_s_ = 0.0;
   std::vector<double> time_s_;
   std::vector<double> displacement_m_;
   std::optional<road::UniformSpline> spline_;
