@@ -1,7 +1,7 @@
 // Damper tuning with NLopt (COBYLA) on datasets/studies/passat_damper_tuning.yaml: two design
 // variables (damping, top-mount stiffness), three load cases of 60 s each, the stick/slip strut
-// with Dahl friction simulated by CVODE, load cases in parallel on every core. Only the
-// friction-aware optimisation with its verification (no friction-blind run, no trade-off).
+// with Dahl friction simulated by the default ESDIRK, load cases in parallel on every core. Only
+// the friction-aware optimisation with its verification (no friction-blind run, no trade-off).
 // Target: <= 20 s wall on 2 cores. Counters: evaluations, computed ones, seconds per computed
 // evaluation. A second case times the linear half car in the frequency domain.
 #include <benchmark/benchmark.h>

@@ -20,7 +20,7 @@ using study::LoadCaseRoad;
 LoadCaseRoad prepare_load_case_road(const TuningStudy& study, std::size_t load_case);
 
 // How carefully a case is evaluated: the search's settings, or the verification's (tighter
-// CVODE tolerance, four times the frequency points).
+// integrator tolerance, four times the frequency points).
 enum class Accuracy { kSearch, kVerify };
 
 struct LoadCaseMetrics {

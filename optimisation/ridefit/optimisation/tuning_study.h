@@ -55,7 +55,7 @@ namespace ridefit::optimisation {
 //     output_rate_Hz: 1000     # time domain: output rate, settle time left out, duration
 //     settle_s: 2
 //     duration_s: 0            # 0 = the road's own
-//     relative_tolerance: 1.0e-4     # CVODE during the search
+//     relative_tolerance: 1.0e-4     # the integrator's, during the search
 //     verify_relative_tolerance: 1.0e-6   # the reported optimum is re-evaluated with this
 //     frequency_points: 1000   # frequency domain (the verification uses four times as many)
 //     threads: 0               # load cases in parallel; 0 = every core
