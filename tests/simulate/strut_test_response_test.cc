@@ -110,7 +110,8 @@ TEST(StrutTestResponse, DerivativesMatchCentralDifferencesOnFrozenSteps) {
 
 // The strut system's hand-written Jacobian against autodiff of the templated model, on and off
 // the sliding branches, with the Stribeck level and Dahl exponents other than 1, and at the
-// sliding level itself (F = ±Fc, s = 0 exactly, where d < 1 takes the secant slope).
+// sliding level itself in both directions (F = ±Fc with v of the same sign: s = 0 exactly, where
+// d < 1 takes the secant slope).
 TEST(StrutTestSystem, JacobianMatchesAutodiffOfTheModel) {
   for (const double d : {1.0, 1.6, 0.9}) {
     for (const double vs : {0.0, 0.004}) {
@@ -125,7 +126,8 @@ TEST(StrutTestSystem, JacobianMatchesAutodiffOfTheModel) {
       const StrutTestSystem system(p, rig);
       const double fc = p.coulomb_force_N;
       for (const double f : {-75.0, -30.0, 0.0, 45.0, 59.0, 80.0, fc, -fc}) {
-        for (const double zc : {-0.002, 0.0, 0.0011}) {
+        // The last z_c lies 1 mm beyond the rig's displacement: the damper moves in compression.
+        for (const double zc : {-0.002, 0.0, 0.0011, rig.at(0.3) + 0.001}) {
           const double y[2] = {zc, f};
           double j[4];
           ASSERT_TRUE(system.jacobian(0.3, y, j));

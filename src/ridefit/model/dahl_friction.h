@@ -53,7 +53,7 @@ struct DahlFriction {
     if (!active()) return T(0.0);
     const T s =
         T(1.0) - force_N / level_N(velocity_m_per_s) * sign_positive_at_zero(velocity_m_per_s);
-    return sigma0_N_per_m * velocity_m_per_s * signed_power(s, exponent);
+    return sigma0_N_per_m * velocity_m_per_s * dahl_power(s, exponent);
   }
 };
 

@@ -36,27 +36,15 @@ bool held_at_one(const E& d) {
 // sgn(s) * |s|^d for d > 0, with an exact zero at s = 0, where log|s| would be -inf. There the
 // derivative with respect to d is 0 by continuity, and the one with respect to s is that of the
 // power: 1 for d = 1 (s itself is returned, so tangents pass through: the Dahl element sits at
-// exactly s = 0 while it slides, F = ±Fc, and the fits differentiate through it) and 0 for d > 1.
-// For d < 1 it is unbounded, and that matters: the Dahl element then reaches its sliding level in
-// finite time and sits at s = 0 exactly, F pinned to the level (∂F/∂Fc = 1). A zero slope there
-// froze the tangent of F at the value it had on arrival (0.5 where central differences give 1).
-// The secant over the smallest step s takes next to 0 in
-// doubles, ε^(d−1) (ε = 2^-52: s = 1 − F/Fc moves by ε/2 … ε there; 36 for d = 0.9), stands for
-// it: the tangent then follows the level's to within 1 %. A larger slope (1/ε) pins it exactly
-// but makes the slope jump by 14 decades between s = 0 and the next double, and a stage whose s
-// rounds differently in the Jacobian and in the residual then blew the tangent up.
-inline constexpr double kLogSignedPowerZeroStep = -36.04365338911715;  // log(2^-52)
-
+// exactly s = 0 while it slides, F = ±Fc, and the fits differentiate through it), 0 for d > 1
+// and unbounded for d < 1 (0 is kept: a one-sided choice; the Dahl law takes its own,
+// dahl_power below).
 template <typename T, typename E>
 T signed_power(const T& s, const E& d) {
   using std::abs;
   using std::exp;
   using std::log;
-  if (s == 0.0) {
-    if (d == 1.0) return s;
-    if (d > 1.0) return T(0.0);
-    return s * exp((d - 1.0) * kLogSignedPowerZeroStep);
-  }
+  if (s == 0.0) return d == 1.0 ? s : T(0.0);
   // The common d = 1 without exp and log, when d carries no derivative (a double, or a Jet of
   // an exponent the fit holds: the Dahl shape of every MR fit, evaluated at each stage).
   if (held_at_one(d)) return s;
@@ -64,10 +52,30 @@ T signed_power(const T& s, const E& d) {
   return s < 0.0 ? T(-magnitude) : magnitude;
 }
 
-// d/ds of signed_power at s = 0 in doubles, with the same choice (1; 0 for d > 1; ε^(d−1) for
+// log(ε), ε = 2^-52: the smallest step s = 1 − F/Fc takes next to 0 in doubles is ε/2 … ε.
+inline constexpr double kLogSignedPowerZeroStep = -36.04365338911715;
+
+// signed_power for the Dahl law's s = 1 − (F/Fc)·sgn v, which differs at s = 0 for d < 1. There
+// the slope is unbounded, and that matters: the element reaches its sliding level in finite time
+// and sits at s = 0 exactly, F pinned to the level (∂F/∂Fc = 1). signed_power's zero slope froze
+// the tangent of F at the value it had on arrival (0.51 where central differences give 1). The
+// secant over the smallest step s takes next to 0, ε^(d−1) (36.8 for d = 0.9), stands for it:
+// the tangent then follows the level's to within 1 %. A larger slope (1/ε) pins it exactly but
+// makes the slope jump by 14 decades between s = 0 and the next double, and a stage whose s
+// rounded differently in the Jacobian and in the residual then blew the tangent up. Only the Dahl
+// law takes it: a command shaped by u^p is not a rounding of 1 − F/Fc, and at 0 A a slope of
+// ε^(p−1) (3e12 at p = 0.2) would only load the Newton matrices.
+template <typename T, typename E>
+T dahl_power(const T& s, const E& d) {
+  using std::exp;
+  if (s == 0.0 && d < 1.0) return s * exp((d - 1.0) * kLogSignedPowerZeroStep);
+  return signed_power(s, d);
+}
+
+// d/ds of dahl_power at s = 0 in doubles, with the same choice (1; 0 for d > 1; ε^(d−1) for
 // d < 1): for Jacobians written out by hand, which must agree with the tangents the law gives in
 // Jets.
-inline double signed_power_slope_at_zero(double d) {
+inline double dahl_power_slope_at_zero(double d) {
   if (d == 1.0) return 1.0;
   return d > 1.0 ? 0.0 : std::exp((d - 1.0) * kLogSignedPowerZeroStep);
 }

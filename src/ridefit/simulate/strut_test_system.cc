@@ -172,7 +172,7 @@ bool StrutTestSystem::jacobian(double t_s, const double* y, double* jacobian_col
     if (p_.dahl_exponent != 1.0) {
       const double magnitude = s == 0.0 ? 0.0 : std::pow(std::abs(s), p_.dahl_exponent);
       power = s < 0.0 ? -magnitude : magnitude;
-      slope = s == 0.0 ? model::signed_power_slope_at_zero(p_.dahl_exponent)
+      slope = s == 0.0 ? model::dahl_power_slope_at_zero(p_.dahl_exponent)
                        : p_.dahl_exponent * magnitude / std::abs(s);
     }
     // s moves with F directly and, through the level, with v: ds/dv = (F·sgn v / L²)·dL/dv.
