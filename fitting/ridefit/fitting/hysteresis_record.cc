@@ -59,28 +59,6 @@ void require_fittable(const HysteresisRecord& record) {
   signal::require_signal(record.force_N, record.source, "force", "N");
 }
 
-// Rows [first, last) of `r`.
-HysteresisRecord rows_of(const HysteresisRecord& r, std::size_t first, std::size_t last,
-                         std::string source) {
-  auto part = [&](const std::vector<double>& v) {
-    return v.empty() ? std::vector<double>()
-                     : std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(first),
-                                           v.begin() + static_cast<std::ptrdiff_t>(last));
-  };
-  HysteresisRecord out;
-  out.source = std::move(source);
-  out.time_s = part(r.time_s);
-  out.displacement_m = part(r.displacement_m);
-  out.force_N = part(r.force_N);
-  out.command = part(r.command);
-  out.command_unit = r.command_unit;
-  out.velocity_m_per_s = part(r.velocity_m_per_s);
-  // Rows of an examined record keep its displacement as it was treated.
-  out.displacement_low_pass = r.displacement_low_pass;
-  out.displacement_low_passed = r.displacement_low_passed;
-  return out;
-}
-
 // How many times x crosses its mid-stroke (with a dead band of 5 % of the stroke, so that
 // quantisation noise at a turning point does not count).
 int mid_stroke_crossings(const std::vector<double>& x) {
@@ -106,6 +84,27 @@ bool holds_a_cycle(const std::vector<double>& x) {
 }
 
 }  // namespace
+
+HysteresisRecord rows_of(const HysteresisRecord& r, std::size_t first, std::size_t last,
+                         std::string source) {
+  auto part = [&](const std::vector<double>& v) {
+    return v.empty() ? std::vector<double>()
+                     : std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(first),
+                                           v.begin() + static_cast<std::ptrdiff_t>(last));
+  };
+  HysteresisRecord out;
+  out.source = std::move(source);
+  out.time_s = part(r.time_s);
+  out.displacement_m = part(r.displacement_m);
+  out.force_N = part(r.force_N);
+  out.command = part(r.command);
+  out.command_unit = r.command_unit;
+  out.velocity_m_per_s = part(r.velocity_m_per_s);
+  // Rows of an examined record keep its displacement as it was treated.
+  out.displacement_low_pass = r.displacement_low_pass;
+  out.displacement_low_passed = r.displacement_low_passed;
+  return out;
+}
 
 HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file) {
   HysteresisRecord record =

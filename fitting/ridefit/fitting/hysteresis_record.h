@@ -48,6 +48,11 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file);
 // (quantised_displacement.h).
 std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path& file);
 
+// Rows [first, last) of `r`, named `source`: every per-sample column (command, measured velocity)
+// cut alike, the displacement's treatment kept.
+HysteresisRecord rows_of(const HysteresisRecord& r, std::size_t first, std::size_t last,
+                         std::string source);
+
 // The rows [first, last) where the actuator moves: the rest before the motion starts and after it
 // ends cut off (the displacement within 1 % of the stroke of its first or last value, back to
 // where it left rest by more than a few quantisation steps), one rest sample kept on each side.

@@ -6,13 +6,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "ridefit/fitting/strut_parameters.h"
+#include "ridefit/simulate/strut_test_response.h"
+#include "ridefit/synthetic/multisine.h"
 #include "support/loop_diagnosis_cases.h"
 #include "support/passat.h"
 #include "support/rig_record.h"
@@ -173,18 +177,71 @@ TEST(LoopDiagnosis, ReportsADisagreementOutsideTheLibraryAsUnexplained) {
   const DiagnosisResult r = diagnose_loops(baseline_of(passat_strut()), data, {});
   EXPECT_FALSE(r.unexplained_loops.empty()) << r.verdict;
   EXPECT_NE(r.verdict.find("no effect of the library explains"), std::string::npos) << r.verdict;
+  // What is left has the hidden force's shape: the square of travel, in tension, about its size.
+  ASSERT_FALSE(r.residual_shape.terms.empty()) << r.verdict;
+  EXPECT_EQ(r.residual_shape.terms[0].id, "travel_squared") << r.verdict;
+  EXPECT_NEAR(r.residual_shape.terms[0].coefficient, 4e6, 1.2e6) << r.verdict;
+  EXPECT_NE(r.verdict.find("the force the model lacks looks like"), std::string::npos);
 }
 
 TEST(LoopDiagnosis, SplitsOneRecordInHalvesAndSeveralAlternately) {
-  const auto one = rig_record(passat_strut(), 5, false);
+  auto one = rig_record(passat_strut(), 5, false);
+  // A record with the rig's measured velocity: both halves keep theirs (the model runs on it).
+  for (std::size_t k = 0; k < one.time_s.size(); ++k) {
+    one.velocity_m_per_s.push_back(1e-3 * static_cast<double>(k));
+  }
   const LoopDiagnosisData halves = split_loops({one});
   ASSERT_EQ(halves.training.size(), 1u);
   ASSERT_EQ(halves.held_out.size(), 1u);
   EXPECT_EQ(halves.training[0].time_s.size() + halves.held_out[0].time_s.size(), one.time_s.size());
   EXPECT_EQ(halves.held_out[0].time_s.front(), one.time_s[one.time_s.size() / 2]);
+  const std::size_t half = one.time_s.size() / 2;
+  ASSERT_EQ(halves.training[0].velocity_m_per_s.size(), half);
+  ASSERT_EQ(halves.held_out[0].velocity_m_per_s.size(), one.time_s.size() - half);
+  EXPECT_EQ(halves.held_out[0].velocity_m_per_s.front(), one.velocity_m_per_s[half]);
+  EXPECT_EQ(rig_velocity_m_per_s(halves.held_out[0]), halves.held_out[0].velocity_m_per_s);
   const LoopDiagnosisData three = split_loops({one, one, one});
   EXPECT_EQ(three.training.size(), 2u);
   EXPECT_EQ(three.held_out.size(), 1u);
+}
+
+// A record with the rig's own velocity column (here a sensor reading 20 % high, so that it differs
+// from the displacement's slope): the held-out forces a diagnosis judges are the model's run on
+// it, as the fits' are, not on the displacement's derivative.
+TEST(LoopDiagnosis, JudgesOnTheRigsMeasuredVelocity) {
+  const auto truth = passat_strut();
+  auto one = testing::multisine_rig_record(truth, 4.0, 500.0, 0.6, 7, false);
+  const synthetic::Multisine x = synthetic::lab_three_sines();
+  for (double t : one.time_s) {
+    double v = 0.0;
+    for (std::size_t i = 0; i < x.amplitude_m.size(); ++i) {
+      const double w = 2.0 * std::numbers::pi * x.frequency_Hz[i];
+      v += x.amplitude_m[i] * w * std::cos(w * t + x.phase_rad[i]);
+    }
+    one.velocity_m_per_s.push_back(1.2 * v);
+  }
+  LoopDiagnosisOptions options;
+  options.selection.max_effects = 0;  // the baseline's fit and map only
+  const DiagnosisResult r = diagnose_loops(baseline_of(truth), split_loops({one}), options);
+  ASSERT_EQ(r.before_force_N.size(), 1u);
+  const auto& strut = r.baseline.strut;
+  const auto with_velocity = simulate::strut_test_force<double>(
+      one.time_s, one.displacement_m, strut, strut, options.solver, {}, one.velocity_m_per_s);
+  const auto without = simulate::strut_test_force<double>(one.time_s, one.displacement_m, strut,
+                                                          strut, options.solver);
+  ASSERT_TRUE(with_velocity && without);
+  const std::size_t half = one.time_s.size() / 2;
+  ASSERT_EQ(r.before_force_N[0].size(), one.time_s.size() - half);
+  double from_velocity = 0.0, from_slope = 0.0;
+  for (std::size_t k = half; k < one.time_s.size(); ++k) {
+    from_velocity =
+        std::max(from_velocity, std::abs(r.before_force_N[0][k - half] - (*with_velocity)[k]));
+    from_slope = std::max(from_slope, std::abs(r.before_force_N[0][k - half] - (*without)[k]));
+  }
+  EXPECT_LT(from_velocity, 1e-6);
+  // The two runs differ (the velocity shapes the motion between samples), so the test can tell
+  // which one was judged.
+  EXPECT_GT(from_slope, 1e-2);
 }
 
 }  // namespace

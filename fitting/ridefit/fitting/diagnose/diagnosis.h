@@ -9,6 +9,7 @@
 #include "ridefit/fitting/diagnose/disagreement_map.h"
 #include "ridefit/fitting/diagnose/effect_selection.h"
 #include "ridefit/fitting/diagnose/loop_disagreement.h"
+#include "ridefit/fitting/diagnose/residual_shape.h"
 #include "ridefit/fitting/psd_fit.h"
 
 namespace ridefit::fitting::diagnose {
@@ -75,6 +76,9 @@ struct DiagnosisResult {
   LoopDisagreementMap loops_after;
   std::vector<std::vector<double>> before_force_N, after_force_N;
   std::vector<LoopRegion> unexplained_loops;
+  // When such regions remain: the force the final model lacks, in named terms of travel, velocity
+  // and acceleration (residual_shape.h), a suggestion for a new effect.
+  ResidualShape residual_shape;
 };
 
 // The kind-independent part of a result: the baseline's and the final fit's models and

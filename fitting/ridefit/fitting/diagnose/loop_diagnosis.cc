@@ -8,6 +8,7 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/fitting/diagnose/damper_speed.h"
+#include "ridefit/fitting/diagnose/residual_shape.h"
 #include "ridefit/fitting/hysteresis_fit.h"
 #include "ridefit/fitting/strut_parameters.h"
 #include "ridefit/fitting/strut_start.h"
@@ -15,20 +16,6 @@
 
 namespace ridefit::fitting::diagnose {
 namespace {
-
-HysteresisRecord slice(const HysteresisRecord& r, std::size_t begin, std::size_t end,
-                       const std::string& part) {
-  auto cut = [&](const std::vector<double>& v) {
-    return std::vector<double>(v.begin() + static_cast<std::ptrdiff_t>(begin),
-                               v.begin() + static_cast<std::ptrdiff_t>(end));
-  };
-  return {r.source + " (" + part + ")",
-          cut(r.time_s),
-          cut(r.displacement_m),
-          cut(r.force_N),
-          r.command.empty() ? std::vector<double>() : cut(r.command),
-          r.command_unit};
-}
 
 std::vector<std::string> default_free(const model::StrutTestParameters<double>& strut) {
   namespace rows = model::quarter_car_rows;
@@ -69,6 +56,11 @@ HysteresisRecord joined(const HysteresisRecord& lead, const HysteresisRecord& r)
   } else {
     all.command.clear();
   }
+  if (!lead.velocity_m_per_s.empty() && !r.velocity_m_per_s.empty()) {
+    append(all.velocity_m_per_s, r.velocity_m_per_s);
+  } else {
+    all.velocity_m_per_s.clear();
+  }
   return all;
 }
 
@@ -83,7 +75,7 @@ std::optional<std::vector<std::vector<double>>> forces_of(
     const bool lead = i < data.held_out_lead_in.size() && !data.held_out_lead_in[i].time_s.empty();
     const HysteresisRecord run = lead ? joined(data.held_out_lead_in[i], r) : r;
     auto force = simulate::strut_test_force<double>(run.time_s, run.displacement_m, strut, strut,
-                                                    solver, run.command);
+                                                    solver, run.command, run.velocity_m_per_s);
     if (!force) return std::nullopt;
     force->erase(force->begin(),
                  force->begin() + static_cast<std::ptrdiff_t>(run.time_s.size() - r.time_s.size()));
@@ -157,6 +149,43 @@ ScoredFit fit_and_score(const DiagnosisModel& start, const std::vector<std::stri
   return s;
 }
 
+// One record's samples for the residual's shape: the rig's velocity and acceleration as the model
+// runs on them (the record's measured velocity, else the interpolant's slope), the model's force
+// and what it lacks.
+ShapeSamples shape_samples(const HysteresisRecord& r, const std::vector<double>& simulated_N,
+                           const simulate::StrutTestSolverOptions& solver) {
+  const simulate::RigDisplacement x(r.time_s, r.displacement_m, solver.interpolation,
+                                    r.velocity_m_per_s);
+  ShapeSamples s;
+  s.displacement_m = r.displacement_m;
+  for (double t : r.time_s) s.velocity_m_per_s.push_back(x.rate_at(t));
+  s.acceleration_m_per_s2 = simulate::rig_acceleration_at_samples(r.time_s, x, r.velocity_m_per_s);
+  s.model_force_N = simulated_N;
+  for (std::size_t k = 0; k < r.force_N.size(); ++k) {
+    s.missing_force_N.push_back(r.force_N[k] - simulated_N[k]);
+  }
+  return s;
+}
+
+// The shape of the force `strut` lacks on the training and the held-out records (none when the
+// model cannot be run on a training record).
+ResidualShape shape_of_what_is_missing(const LoopDiagnosisData& data,
+                                       const model::StrutTestParameters<double>& strut,
+                                       const std::vector<std::vector<double>>& held_out_N,
+                                       const simulate::StrutTestSolverOptions& solver) {
+  std::vector<ShapeSamples> training, judging;
+  for (const auto& r : data.training) {
+    const auto force = simulate::strut_test_force<double>(r.time_s, r.displacement_m, strut, strut,
+                                                          solver, r.command, r.velocity_m_per_s);
+    if (!force) return {};
+    training.push_back(shape_samples(r, *force, solver));
+  }
+  for (std::size_t i = 0; i < data.held_out.size() && i < held_out_N.size(); ++i) {
+    judging.push_back(shape_samples(data.held_out[i], held_out_N[i], solver));
+  }
+  return residual_shape(training, judging);
+}
+
 std::string describe(const LoopRegion& r) {
   const bool velocity = r.quantity == "velocity";
   const double scale = 1e3;  // mm/s and mm read better on a rig
@@ -205,8 +234,8 @@ LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records) {
   if (records.size() == 1) {
     const HysteresisRecord& r = records.front();
     const std::size_t half = r.time_s.size() / 2;
-    data.training.push_back(slice(r, 0, half, "first half"));
-    data.held_out.push_back(slice(r, half, r.time_s.size(), "second half"));
+    data.training.push_back(rows_of(r, 0, half, r.source + " (first half)"));
+    data.held_out.push_back(rows_of(r, half, r.time_s.size(), r.source + " (second half)"));
     data.held_out_lead_in.push_back(data.training.front());
     return data;
   }
@@ -283,6 +312,10 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
       unexplained.push_back(describe(region));
     }
   }
+  if (!unexplained.empty()) {
+    result.residual_shape =
+        shape_of_what_is_missing(data, after.model.strut, after.held_out_signals, options.solver);
+  }
   if (const Explanation* chosen = find_explanation(result.explanations, result.named);
       chosen && chosen->probability < kConfidentProbability) {
     if (const Explanation* rival = strongest_rival(result.explanations, result.named)) {
@@ -291,6 +324,12 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
   }
   result.verdict = verdict_of(result.named, unexplained, result.not_identifiable,
                               evidence_words(result.explanations, result.named, result.separation));
+  if (!result.residual_shape.terms.empty()) {
+    result.verdict += fmt::format(
+        "; the force the model lacks looks like {} (a suggestion for a new effect, not one of "
+        "the library)",
+        diagnose::describe(result.residual_shape));
+  }
   return result;
 }
 

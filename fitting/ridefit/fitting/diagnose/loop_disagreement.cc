@@ -83,6 +83,7 @@ void find_regions(const std::string& record, const std::string& name,
 
 std::vector<double> rig_velocity_m_per_s(const HysteresisRecord& r) {
   const std::size_t n = r.time_s.size();
+  if (r.velocity_m_per_s.size() == n) return r.velocity_m_per_s;
   std::vector<double> v(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t a = k == 0 ? 0 : k - 1, b = std::min(k + 1, n - 1);

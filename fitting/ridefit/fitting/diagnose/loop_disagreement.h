@@ -50,7 +50,8 @@ struct LoopDisagreementMap {
   double gap_percent = 0.0;
 };
 
-// The rig's velocity by central differences (one-sided at the ends), m/s.
+// The rig's velocity, m/s: its measured velocity where the record has one, else central
+// differences of the displacement (one-sided at the ends).
 std::vector<double> rig_velocity_m_per_s(const HysteresisRecord& record);
 
 // The loop gap alone (LoopDisagreementMap::gap_percent), without the map's regions: what the

@@ -53,6 +53,42 @@ nlohmann::json regions_json(const std::vector<LoopRegion>& regions) {
   return j;
 }
 
+void write_shape(std::ostream& out, const ResidualShape& shape) {
+  if (shape.terms.empty()) return;
+  out << "## What the model still lacks, in named terms\n\n";
+  out << fmt::format(
+      "The force the final model lacks (measured − simulated) regressed on terms of travel about "
+      "mid-stroke ({:.4g} mm, half stroke {:.3g} mm), velocity, acceleration and the model's own "
+      "force; each kept term, fitted on the training records, lowers the judging records' residual "
+      "by at least 5 % and stands 4 standard errors from 0. A suggestion for a new effect, not an "
+      "effect of the library. Together the terms take {:.0f} % of the judged residual's sum of "
+      "squares.\n\n",
+      1e3 * shape.travel_centre_m, 1e3 * shape.half_stroke_m, 100.0 * shape.judged_share);
+  out << "| term | what it says | coefficient (SI) | of the judged residual |\n| --- | --- | --- | "
+         "--- |\n";
+  for (const auto& t : shape.terms) {
+    out << fmt::format("| {} | {} | {:.4g} ± {:.2g} {} | {:.1f} % |\n", t.id, t.words,
+                       t.coefficient, t.standard_error, t.unit, 100.0 * t.judged_share);
+  }
+  out << "\n";
+}
+
+nlohmann::json shape_json(const ResidualShape& shape) {
+  nlohmann::json terms = nlohmann::json::array();
+  for (const auto& t : shape.terms) {
+    terms.push_back({{"term", t.id},
+                     {"words", t.words},
+                     {"coefficient", t.coefficient},
+                     {"standard_error", t.standard_error},
+                     {"unit", t.unit},
+                     {"judged_share", t.judged_share}});
+  }
+  return {{"terms", terms},
+          {"judged_share", shape.judged_share},
+          {"travel_centre_m", shape.travel_centre_m},
+          {"half_stroke_m", shape.half_stroke_m}};
+}
+
 }  // namespace
 
 void write_loop_report(std::ostream& out, const std::string& model_name,
@@ -82,6 +118,7 @@ void write_loop_report(std::ostream& out, const std::string& model_name,
     out << "The model with the effect added: `model.yaml` (its model keys; the rig-only gas "
            "force and load-cell offset are in its header comment).\n\n";
   }
+  write_shape(out, result.residual_shape);
   write_explanations(out, result);
   write_sheet_values(out, result.sheet_values,
                      "freed in every fit within three of its tolerances of the sheet's value");
@@ -98,6 +135,7 @@ nlohmann::json loop_summary_json(const DiagnosisResult& result) {
           {"gap_after_nrmse_percent", result.gap_after},
           {"regions_before", regions_json(result.loops_before.regions)},
           {"unexplained", regions_json(result.unexplained_loops)},
+          {"residual_shape", shape_json(result.residual_shape)},
           {"baseline_parameters", values_json(result.baseline_parameters)},
           {"final_parameters", values_json(result.final_parameters)},
           {"sheet_values", sheet_values_json(result.sheet_values)},

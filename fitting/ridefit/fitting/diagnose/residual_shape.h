@@ -1,0 +1,73 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ridefit::fitting::diagnose {
+
+// What a disagreement looks like that no effect of the library explains: the force the model
+// lacks on the rig (measured − simulated) regressed on a small basis of physically named terms of
+// the rig's travel, velocity and acceleration and of the model's own force (a stiffness, a
+// progressive or one-sided spring, a stop beyond part of the stroke, damping that grows or
+// flattens with speed or differs between compression and rebound, a friction level, a mass, a
+// gain). A suggestion for a new effect in words, never a named library effect.
+//
+// Forward selection, judged on records no fit saw: each round fits every remaining term with the
+// ones already kept to the training records' missing force (least squares, each record's mean
+// removed, so a load-cell offset is no shape) and keeps the one that lowers the judging records'
+// sum of squares most, when it lowers it by at least min_share of where it started and its
+// coefficient lies min_z standard errors from 0 (widened by √τ, the training residual's
+// correlation time: a rig residual is far from white). Terms that stand for each other (travel
+// and travel beyond half the stroke) enter one at a time, so the first names the shape best.
+
+// One record's samples (all of one length).
+struct ShapeSamples {
+  std::vector<double> displacement_m;
+  std::vector<double> velocity_m_per_s;
+  std::vector<double> acceleration_m_per_s2;
+  std::vector<double> model_force_N;    // the model's force, as the load cell would read it
+  std::vector<double> missing_force_N;  // measured − simulated
+};
+
+struct ShapeTerm {
+  std::string id;     // "travel_squared", ...
+  std::string words;  // what the term says, for its sign: "a force of one sign growing with …"
+  std::string unit;   // of the coefficient
+  double coefficient = 0.0;     // fitted on the training and judging records together
+  double standard_error = 0.0;  // widened by the residual's correlation time
+  // Of the judging records' missing force's sum of squares, the share the term removed as it
+  // entered (fitted on the training records).
+  double judged_share = 0.0;
+};
+
+struct ResidualShape {
+  std::vector<ShapeTerm> terms;  // in the order they entered; none: the basis says nothing
+  double judged_share = 0.0;     // what the terms remove together on the judging records
+  // Travel terms are taken about the training records' mid-stroke, over their half stroke.
+  double travel_centre_m = 0.0;
+  double half_stroke_m = 0.0;
+};
+
+struct ResidualShapeOptions {
+  int max_terms = 3;
+  double min_share = 0.05;
+  double min_z = 4.0;
+
+  // InputError naming the option: max_terms outside 1 … 13, min_share outside (0, 1), min_z not
+  // above 0.
+  void validate() const;
+};
+
+// The shape of `training`'s and `judging`'s missing force. InputError for no records on either
+// side, or a record whose columns differ in length or hold fewer than 10 samples. Samples that are
+// not finite are left out.
+ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
+                             const std::vector<ShapeSamples>& judging,
+                             const ResidualShapeOptions& options = {});
+
+// The terms in words with their coefficients, "; " between them ("" for none): "a force of one
+// sign growing with the square of travel either way (x−x₀)² (+4.02 ± 0.05 N/mm², 91 % of the
+// judged residual)".
+std::string describe(const ResidualShape& shape);
+
+}  // namespace ridefit::fitting::diagnose
