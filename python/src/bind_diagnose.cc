@@ -86,7 +86,10 @@ nlohmann::json diagnose_loops(const ModelHandle& model, const DiagnoseArguments&
   options.selection.threads = a.threads;
   const io::QuarterCarFile& file = model.quarter_car("diagnose");
   std::vector<fitting::HysteresisRecord> records;
-  for (const auto& path : a.records) records.push_back(fitting::load_hysteresis_record(path));
+  // As the command: a file of several tests (a segment or test column) gives one record per test.
+  for (const auto& path : a.records) {
+    for (auto& test : fitting::load_hysteresis_tests(path)) records.push_back(std::move(test));
+  }
   const dx::LoopDiagnosisData data = dx::split_loops(records);
   for (const auto* part : {&data.training, &data.held_out}) {
     for (const auto& r : *part) {

@@ -51,6 +51,23 @@ def test_diagnose_of_rig_loops_equals_the_cli(tmp_path, passat):
         result["gap_after_nrmse_percent"], rel=1e-6)
 
 
+def test_diagnose_splits_a_file_of_tests_as_the_cli(tmp_path, passat):
+    # The shipped rig record as two tests in one file (a segment column): each test is a record
+    # of its own, fitted and judged apart, as the command does it.
+    columns = read_csv(dataset("hidden/rig_baseline_only.csv"))
+    n = len(columns["time"])
+    tests = tmp_path / "two_tests.csv"
+    with open(tests, "w") as f:
+        f.write("time[s],displacement[mm],force[N],segment[1]\n")
+        for k in range(n):
+            f.write(f"{float(columns['time'][k])!r},{float(columns['displacement'][k])!r},"
+                    f"{float(columns['force'][k])!r},{1 if k < n // 2 else 2}\n")
+    cli = run_cli("diagnose", passat, tests, "--effects", "gas_force", "--threads", 1, "--json",
+                  "-q", "-o", tmp_path / "loops").json()
+    result = ridefit.diagnose(passat, tests, effects="gas_force", threads=1)
+    assert_same_numbers(result, cli, rtol=1e-6, skip=RUN_KEYS)
+
+
 def test_diagnose_refuses_what_the_cli_refuses(tmp_path, record, passat):
     message = run_cli("diagnose", passat, record, "--effects", "gas_spring", "-o",
                       tmp_path / "d", expect=2).error_message()
