@@ -109,7 +109,10 @@ std::vector<fitting::HysteresisRecord> records_of(const py::list& records) {
   for (std::size_t i = 0; i < records.size(); ++i) {
     const py::handle item = records[i];
     if (py::isinstance<py::str>(item)) {
-      result.push_back(fitting::load_hysteresis_record(item.cast<std::string>()));
+      // As the command: a file of several tests (a segment or test column) is a record per test.
+      for (auto& test : fitting::load_hysteresis_tests(item.cast<std::string>())) {
+        result.push_back(std::move(test));
+      }
     } else if (py::isinstance<py::dict>(item)) {
       result.push_back(record_from_dict(item.cast<py::dict>(), i));
     } else {

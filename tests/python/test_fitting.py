@@ -38,6 +38,25 @@ def test_fit_hysteresis_from_a_file_with_bounds_and_loss_equals_the_cli(passat):
     assert_same_numbers(fit, cli, rtol=1e-6, skip=("written",))
 
 
+def test_fit_hysteresis_of_a_file_of_tests_equals_the_cli(tmp_path, passat):
+    # The triangle record as two tests in one file (a segment column): a record per test, each
+    # from its own rest state, as the command reads it.
+    columns = read_csv(TRIANGLE)
+    n = len(columns["time"])
+    tests = tmp_path / "two_tests.csv"
+    with open(tests, "w") as f:
+        f.write("time[s],displacement[mm],force[N],segment[1]\n")
+        for k in range(n):
+            f.write(f"{float(columns['time'][k])!r},{float(columns['displacement'][k])!r},"
+                    f"{float(columns['force'][k])!r},{1 if k < n // 2 else 2}\n")
+    cli = run_cli("fit", "hysteresis", tests, "--model", passat, "--free", FREE,
+                  "--interpolation", "linear", "--json").json()
+    fit = ridefit.fit_hysteresis(str(tests), passat, free=FREE.split(","),
+                                 interpolation="linear")
+    assert_same_numbers(fit, cli, rtol=1e-6, skip=("written",))
+    assert len(fit["fitted_force_N"]) == 2
+
+
 def test_fit_hysteresis_refuses_what_the_cli_refuses(passat):
     message = run_cli("fit", "hysteresis", TRIANGLE, "--model", passat, "--free",
                       "coulomb_force_N", "--bounds", "damping_Ns_per_m=1:2",
