@@ -121,7 +121,7 @@ TEST(ResidualShape, NamesNothingInNoise) {
 }
 
 TEST(ResidualShape, RefusesBadOptionsAndRecords) {
-  ResidualShapeOptions options;
+  SparseSelectionOptions options;
   options.max_terms = 0;
   EXPECT_THROW(options.validate(), InputError);
   options = {};

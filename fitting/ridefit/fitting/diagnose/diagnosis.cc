@@ -296,6 +296,10 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   }
   std::vector<std::string> unexplained;
   for (const auto& region : result.unexplained) unexplained.push_back(describe(region));
+  if (!result.unexplained.empty()) {
+    result.spectral_shape =
+        spectral_shape(result.after, map_options.band_low_Hz, map_options.band_high_Hz);
+  }
   if (const Explanation* chosen = find_explanation(result.explanations, result.named);
       chosen && chosen->probability < kConfidentProbability) {
     if (const Explanation* rival = strongest_rival(result.explanations, result.named)) {
@@ -305,6 +309,12 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   }
   result.verdict = verdict_of(result.named, unexplained, result.not_identifiable,
                               evidence_words(result.explanations, result.named, result.separation));
+  if (!result.spectral_shape.terms.empty()) {
+    result.verdict += fmt::format(
+        "; the ratio of the measured to the simulated spectra looks like {} (a suggestion for a "
+        "new effect, not one of the library)",
+        diagnose::describe(result.spectral_shape));
+  }
   return result;
 }
 

@@ -10,6 +10,7 @@
 #include "ridefit/fitting/diagnose/effect_selection.h"
 #include "ridefit/fitting/diagnose/loop_disagreement.h"
 #include "ridefit/fitting/diagnose/residual_shape.h"
+#include "ridefit/fitting/diagnose/spectral_shape.h"
 #include "ridefit/fitting/psd_fit.h"
 
 namespace ridefit::fitting::diagnose {
@@ -70,6 +71,9 @@ struct DiagnosisResult {
   DisagreementMap after;
   std::vector<double> before_body, before_wheel, after_body, after_wheel;
   std::vector<DisagreementRegion> unexplained;
+  // When such regions remain: the final map's measured-over-simulated ratio in named shapes
+  // (spectral_shape.h), a suggestion for a new effect.
+  SpectralShape spectral_shape;
 
   // Strut loops: the same for the held-out records' forces.
   LoopDisagreementMap loops_before;

@@ -2,7 +2,6 @@
 
 #include <fmt/core.h>
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,7 +10,7 @@
 #include <string_view>
 
 #include "ridefit/common/errors.h"
-#include "ridefit/signal/correlation_time.h"
+#include "ridefit/fitting/diagnose/sparse_selection.h"
 
 namespace ridefit::fitting::diagnose {
 namespace {
@@ -110,25 +109,19 @@ constexpr std::array<Term, 13> kTerms{{
 }};
 constexpr int kTermCount = static_cast<int>(kTerms.size());
 
-// Rows of the basis and the missing force, each record's mean taken out of every column.
-struct Design {
-  Eigen::MatrixXd basis;
-  Eigen::VectorXd missing;
-  std::vector<std::size_t> lengths;
-};
-
 bool usable(const ShapeSamples& r, std::size_t k) {
   return std::isfinite(r.displacement_m[k]) && std::isfinite(r.velocity_m_per_s[k]) &&
          std::isfinite(r.acceleration_m_per_s2[k]) && std::isfinite(r.model_force_N[k]) &&
          std::isfinite(r.missing_force_N[k]);
 }
 
-Design design_of(const std::vector<ShapeSamples>& records, double centre_m, const Scales& scales) {
+SelectionRows rows_of(const std::vector<ShapeSamples>& records, double centre_m,
+                      const Scales& scales) {
   std::size_t rows = 0;
   for (const auto& r : records) {
     for (std::size_t k = 0; k < r.missing_force_N.size(); ++k) rows += usable(r, k) ? 1 : 0;
   }
-  Design d{Eigen::MatrixXd(rows, kTermCount), Eigen::VectorXd(rows), {}};
+  SelectionRows d{Eigen::MatrixXd(rows, kTermCount), Eigen::VectorXd(rows), {}};
   Eigen::Index row = 0;
   for (const auto& r : records) {
     const Eigen::Index first = row;
@@ -137,47 +130,18 @@ Design design_of(const std::vector<ShapeSamples>& records, double centre_m, cons
       const Sample s{r.displacement_m[k] - centre_m, r.velocity_m_per_s[k],
                      r.acceleration_m_per_s2[k], r.model_force_N[k]};
       for (int j = 0; j < kTermCount; ++j) d.basis(row, j) = kTerms[j].value(s, scales);
-      d.missing(row) = r.missing_force_N[k];
+      d.target(row) = r.missing_force_N[k];
       ++row;
     }
     const Eigen::Index n = row - first;
     if (n == 0) continue;
     auto block = d.basis.middleRows(first, n);
     block.rowwise() -= block.colwise().mean();
-    auto y = d.missing.segment(first, n);
+    auto y = d.target.segment(first, n);
     y.array() -= y.mean();
     d.lengths.push_back(static_cast<std::size_t>(n));
   }
   return d;
-}
-
-// The least-squares fit of `y` on the columns `kept` of `a`, with the coefficients' standard
-// errors widened by the residual's correlation time (pooled over the records' lengths). Empty when
-// the columns are not independent.
-struct Fit {
-  Eigen::VectorXd coefficients;
-  Eigen::VectorXd standard_errors;
-  bool ok = false;
-};
-
-Fit least_squares(const Eigen::MatrixXd& a, const Eigen::VectorXd& y, const std::vector<int>& kept,
-                  const std::vector<std::size_t>& lengths) {
-  Fit fit;
-  const Eigen::MatrixXd columns = a(Eigen::all, kept);
-  const Eigen::Index n = columns.rows(), k = columns.cols();
-  if (n <= k + 1) return fit;
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(columns);
-  if (qr.rank() < k) return fit;
-  fit.coefficients = qr.solve(y);
-  const Eigen::VectorXd residual = y - columns * fit.coefficients;
-  const std::vector<double> r(residual.data(), residual.data() + residual.size());
-  const double tau = signal::pooled_correlation_time_samples(r, lengths);
-  const double variance = residual.squaredNorm() / static_cast<double>(n - k);
-  const Eigen::MatrixXd inverse =
-      (columns.transpose() * columns).ldlt().solve(Eigen::MatrixXd::Identity(k, k));
-  fit.standard_errors = (variance * tau * inverse.diagonal().array()).max(0.0).sqrt().matrix();
-  fit.ok = fit.coefficients.allFinite() && fit.standard_errors.allFinite();
-  return fit;
 }
 
 void check(const std::vector<ShapeSamples>& records, std::string_view side) {
@@ -220,24 +184,9 @@ std::string words_of(const Term& term, bool positive, double knee_m) {
 
 }  // namespace
 
-void ResidualShapeOptions::validate() const {
-  if (max_terms < 1 || max_terms > kTermCount) {
-    throw InputError(
-        fmt::format("residual shape: max_terms {}: expected 1 … {}", max_terms, kTermCount));
-  }
-  if (!(min_share > 0.0 && min_share < 1.0)) {
-    throw InputError(
-        fmt::format("residual shape: min_share {}: expected a share in (0, 1)", min_share));
-  }
-  if (!(min_z > 0.0) || !std::isfinite(min_z)) {
-    throw InputError(
-        fmt::format("residual shape: min_z {}: expected a finite value above 0", min_z));
-  }
-}
-
 ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
                              const std::vector<ShapeSamples>& judging,
-                             const ResidualShapeOptions& options) {
+                             const SparseSelectionOptions& options) {
   options.validate();
   check(training, "training");
   check(judging, "judging");
@@ -258,77 +207,24 @@ ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
   shape.half_stroke_m = 0.5 * (high - low);
   const Scales scales{std::max(shape.half_stroke_m, 1e-12),
                       std::max(std::sqrt(speed_squares / static_cast<double>(speeds)), 1e-12)};
-  Design train = design_of(training, shape.travel_centre_m, scales);
-  Design judge = design_of(judging, shape.travel_centre_m, scales);
-  if (judge.missing.size() < 10) return shape;
-
-  // Columns on one scale (the training rows' RMS), so the QR and the share compare like with like;
-  // a column that is zero on the training rows (no acceleration on a triangle test) cannot enter.
-  std::vector<int> candidates;
-  Eigen::VectorXd scale(kTermCount);
-  for (int j = 0; j < kTermCount; ++j) {
-    scale(j) = train.basis.col(j).norm() / std::sqrt(static_cast<double>(train.basis.rows()));
-    if (scale(j) > 0.0 && std::isfinite(scale(j))) {
-      train.basis.col(j) /= scale(j);
-      judge.basis.col(j) /= scale(j);
-      candidates.push_back(j);
-    }
-  }
-  const double start = judge.missing.squaredNorm();
-  if (!(start > 0.0)) return shape;
-  double now = start;
-  std::vector<int> kept;
-  for (int round = 0; round < options.max_terms; ++round) {
-    int best = -1;
-    double best_sse = now;
-    for (int j : candidates) {
-      if (std::find(kept.begin(), kept.end(), j) != kept.end()) continue;
-      std::vector<int> trial = kept;
-      trial.push_back(j);
-      const Fit fit = least_squares(train.basis, train.missing, trial, train.lengths);
-      if (!fit.ok) continue;
-      const double z = std::abs(fit.coefficients(fit.coefficients.size() - 1)) /
-                       fit.standard_errors(fit.standard_errors.size() - 1);
-      if (!(z >= options.min_z)) continue;
-      const double sse =
-          (judge.missing - judge.basis(Eigen::all, trial) * fit.coefficients).squaredNorm();
-      if (sse < best_sse) {
-        best = j;
-        best_sse = sse;
-      }
-    }
-    if (best < 0 || now - best_sse < options.min_share * start) break;
-    kept.push_back(best);
-    ShapeTerm term;
-    term.id = kTerms[static_cast<std::size_t>(best)].id;
-    term.unit = kTerms[static_cast<std::size_t>(best)].unit;
-    term.judged_share = (now - best_sse) / start;
-    shape.terms.push_back(term);
-    now = best_sse;
-  }
-  shape.judged_share = 1.0 - now / start;
-  if (kept.empty()) return shape;
-
-  // The reported coefficients from every record.
-  Design all;
-  all.basis.resize(train.basis.rows() + judge.basis.rows(), kTermCount);
-  all.basis << train.basis, judge.basis;
-  all.missing.resize(all.basis.rows());
-  all.missing << train.missing, judge.missing;
-  all.lengths = train.lengths;
-  all.lengths.insert(all.lengths.end(), judge.lengths.begin(), judge.lengths.end());
-  const Fit fit = least_squares(all.basis, all.missing, kept, all.lengths);
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    const auto e = static_cast<Eigen::Index>(i);
-    const double s = scale(kept[i]);
-    shape.terms[i].coefficient = fit.ok ? fit.coefficients(e) / s : NAN;
-    shape.terms[i].standard_error = fit.ok ? fit.standard_errors(e) / s : NAN;
-    const Term& term = kTerms[static_cast<std::size_t>(kept[i])];
+  const SelectionRows train = rows_of(training, shape.travel_centre_m, scales);
+  const SelectionRows judge = rows_of(judging, shape.travel_centre_m, scales);
+  const SparseSelection selection = select_columns(train, judge, options);
+  shape.judged_share = selection.judged_share;
+  for (const auto& c : selection.columns) {
+    const Term& term = kTerms[static_cast<std::size_t>(c.column)];
+    ShapeTerm t;
+    t.id = term.id;
+    t.unit = term.unit;
+    t.coefficient = c.coefficient;
+    t.standard_error = c.standard_error;
+    t.judged_share = c.judged_share;
     const double knee = term.id == "travel_beyond_half_stroke" ? 0.5 * scales.half_stroke_m
                         : term.id == "travel_beyond_three_quarter_stroke"
                             ? 0.75 * scales.half_stroke_m
                             : 0.0;
-    shape.terms[i].words = words_of(term, shape.terms[i].coefficient >= 0.0, knee);
+    t.words = words_of(term, t.coefficient >= 0.0, knee);
+    shape.terms.push_back(t);
   }
   return shape;
 }

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "ridefit/fitting/diagnose/sparse_selection.h"
+
 namespace ridefit::fitting::diagnose {
 
 // What a disagreement looks like that no effect of the library explains: the force the model
@@ -12,13 +14,8 @@ namespace ridefit::fitting::diagnose {
 // flattens with speed or differs between compression and rebound, a friction level, a mass, a
 // gain). A suggestion for a new effect in words, never a named library effect.
 //
-// Forward selection, judged on records no fit saw: each round fits every remaining term with the
-// ones already kept to the training records' missing force (least squares, each record's mean
-// removed, so a load-cell offset is no shape) and keeps the one that lowers the judging records'
-// sum of squares most, when it lowers it by at least min_share of where it started and its
-// coefficient lies min_z standard errors from 0 (widened by √τ, the training residual's
-// correlation time: a rig residual is far from white). Terms that stand for each other (travel
-// and travel beyond half the stroke) enter one at a time, so the first names the shape best.
+// The terms are chosen by forward selection fitted on the training records and judged on the
+// held-out ones (sparse_selection.h), each record's mean removed (a load-cell offset is no shape).
 
 // One record's samples (all of one length).
 struct ShapeSamples {
@@ -48,22 +45,12 @@ struct ResidualShape {
   double half_stroke_m = 0.0;
 };
 
-struct ResidualShapeOptions {
-  int max_terms = 3;
-  double min_share = 0.05;
-  double min_z = 4.0;
-
-  // InputError naming the option: max_terms outside 1 … 13, min_share outside (0, 1), min_z not
-  // above 0.
-  void validate() const;
-};
-
-// The shape of `training`'s and `judging`'s missing force. InputError for no records on either
-// side, or a record whose columns differ in length or hold fewer than 10 samples. Samples that are
-// not finite are left out.
+// The shape of `training`'s and `judging`'s missing force. InputError for bad options, no
+// records on either side, or a record whose columns differ in length or hold fewer than 10 samples.
+// Samples that are not finite are left out.
 ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
                              const std::vector<ShapeSamples>& judging,
-                             const ResidualShapeOptions& options = {});
+                             const SparseSelectionOptions& options = {});
 
 // The terms in words with their coefficients, "; " between them ("" for none): "a force of one
 // sign growing with the square of travel either way (x−x₀)² (+4.02 ± 0.05 N/mm², 91 % of the

@@ -39,6 +39,43 @@ void write_channels(std::ostream& out, const DisagreementMap& map) {
   out << "\n";
 }
 
+void write_shape(std::ostream& out, const SpectralShape& shape) {
+  if (shape.terms.empty()) return;
+  out << "## What the model still lacks, in named shapes\n\n";
+  out << fmt::format(
+      "Each channel's measured-over-simulated ratio 10·log10(P_meas/P_sim) over the band, from "
+      "the final model's map, regressed on named shapes (a level, a tilt per decade, a resonance "
+      "or a low-pass on a grid of six frequencies per octave, the model's spectrum shifted along "
+      "frequency); each kept shape, fitted on the even bins, lowers the odd bins' sum of squares "
+      "by at least 5 % and stands 4 standard errors from 0. A suggestion for a new effect, not an "
+      "effect of the library. Together they take {:.0f} % of the judged ratio's sum of "
+      "squares.\n\n",
+      100.0 * shape.judged_share);
+  out << "| shape | channel | frequency [Hz] | what it says | coefficient | of the judged ratio "
+         "|\n| --- | --- | --- | --- | --- | --- |\n";
+  for (const auto& t : shape.terms) {
+    out << fmt::format("| {} | {} | {} | {} | {:.4g} ± {:.2g} {} | {:.1f} % |\n", t.id, t.channel,
+                       t.frequency_Hz > 0.0 ? fmt::format("{:.3g}", t.frequency_Hz) : "", t.words,
+                       t.coefficient, t.standard_error, t.unit, 100.0 * t.judged_share);
+  }
+  out << "\n";
+}
+
+nlohmann::json shape_json(const SpectralShape& shape) {
+  nlohmann::json terms = nlohmann::json::array();
+  for (const auto& t : shape.terms) {
+    terms.push_back({{"shape", t.id},
+                     {"channel", t.channel},
+                     {"frequency_Hz", t.frequency_Hz},
+                     {"words", t.words},
+                     {"coefficient", t.coefficient},
+                     {"standard_error", t.standard_error},
+                     {"unit", t.unit},
+                     {"judged_share", t.judged_share}});
+  }
+  return {{"terms", terms}, {"judged_share", shape.judged_share}};
+}
+
 nlohmann::json regions_json(const std::vector<DisagreementRegion>& regions) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& r : regions) {
@@ -109,6 +146,7 @@ void write_spectra_report(std::ostream& out, const std::string& model_name,
     out << "The model with the effect added: `model.yaml` (ready for simulate, fit and "
            "optimise).\n\n";
   }
+  write_shape(out, result.spectral_shape);
   write_explanations(out, result);
   write_sheet_values(out, result.sheet_values,
                      "freed in every fit with a Gaussian prior at the sheet's value (its "
@@ -129,6 +167,7 @@ nlohmann::json spectra_summary_json(const DiagnosisResult& result) {
           {"channels_after", peaks_json(result.after)},
           {"regions_before", regions_json(result.before.regions)},
           {"unexplained", regions_json(result.unexplained)},
+          {"spectral_shape", shape_json(result.spectral_shape)},
           {"baseline_parameters", values_json(result.baseline_parameters)},
           {"final_parameters", values_json(result.final_parameters)},
           {"sheet_values", sheet_values_json(result.sheet_values)},
