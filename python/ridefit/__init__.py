@@ -80,7 +80,8 @@ def _road(road: RoadLike) -> Road:
 
 def modes(model: ModelLike, state: str = "") -> Dict[str, Any]:
     """Eigenfrequencies and damping ratios of the linear slip and stick quarter car, as
-    `ridefit modes MODEL --json` prints them. state: '' (both), 'slip' or 'stick'."""
+    `ridefit modes MODEL --json` prints them. state: '' (both), 'slip' or 'stick'; a half car's
+    strut axles take it, a half car of passive axles has one state, 'passive'."""
     return _modes(_model(model), state)
 
 

@@ -11,6 +11,8 @@
 #include "model_handle.h"
 #include "ridefit/common/errors.h"
 #include "ridefit/model/quarter_car_parameter_table.h"
+#include "ridefit/simulate/half_car_modes.h"
+#include "ridefit/simulate/modes_json.h"
 #include "ridefit/simulate/quarter_car_modes.h"
 
 namespace ridefit::python {
@@ -21,32 +23,23 @@ namespace {
 
 // `ridefit modes MODEL [--state S] --json`: every state's model is read and solved first.
 nlohmann::json modes_json(const ModelHandle& model, const std::string& state) {
+  if (!model.is_quarter_car()) {
+    const io::HalfCarFile& file = model.half_car();
+    return simulate::modes_json(
+        model.name(),
+        simulate::half_car_modes_by_state(file.topology, file.parameters, state, model.name()));
+  }
   model.quarter_car("modes");
-  const std::vector<std::string> states =
-      state.empty() ? std::vector<std::string>{"slip", "stick"} : std::vector<std::string>{state};
   if (!state.empty() && state != "slip" && state != "stick") {
     throw InputError("state: '" + state + "'; expected '' (both), 'slip' or 'stick'");
   }
-  nlohmann::json summary = {{"model", model.name()}, {"states", nlohmann::json::object()}};
-  for (const auto& s : states) {
-    const auto modes =
-        simulate::quarter_car_modes(model.quarter_car_in_state(s, "--state").make_model());
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& mode : modes.oscillatory) {
-      list.push_back({{"mode", mode.dominant_dof},
-                      {"natural_frequency_Hz", mode.natural_frequency_Hz},
-                      {"damped_frequency_Hz", mode.damped_frequency_Hz},
-                      {"damping_ratio", mode.damping_ratio},
-                      {"energy_share", mode.energy_share}});
-    }
-    nlohmann::json first_order = nlohmann::json::array();
-    for (const auto& mode : modes.real) {
-      first_order.push_back(
-          {{"eigenvalue_per_s", mode.eigenvalue_per_s}, {"time_constant_s", mode.time_constant_s}});
-    }
-    summary["states"][s] = {{"modes", list}, {"first_order", first_order}};
+  std::vector<simulate::StateModes> all;
+  for (const std::string s : {"slip", "stick"}) {
+    if (!state.empty() && s != state) continue;
+    all.push_back(
+        {s, simulate::quarter_car_modes(model.quarter_car_in_state(s, "--state").make_model())});
   }
-  return summary;
+  return simulate::modes_json(model.name(), all);
 }
 
 }  // namespace

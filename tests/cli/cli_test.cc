@@ -2,6 +2,8 @@
 // and no output file.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -84,6 +86,28 @@ TEST_F(Cli, ModesPrintsTheFourSeedFrequencies) {
   ASSERT_EQ(text.exit_code, 0);
   EXPECT_NE(text.output.find("3.4"), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("21.4"), std::string::npos) << text.output;
+}
+
+// The half car's modes: one linear model for passive axles, slip and stick for a strut axle; a
+// --state for a car without struts is refused before anything is printed.
+TEST_F(Cli, ModesOfTheHalfCar) {
+  const std::string half_car = testing::dataset("vehicles/ajayi_half_car.yaml");
+  const CliRun run = run_cli("modes " + half_car + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto j = nlohmann::json::parse(run.output);
+  ASSERT_TRUE(j["states"].contains("passive")) << run.output;
+  EXPECT_EQ(j["states"]["passive"]["modes"].size(), 7u);
+  EXPECT_NE(run.output.find("\"front_wheel\""), std::string::npos);
+  // The file's front axle as seed 000's strut (its stick/slip state set to slip, then stick).
+  const CliRun struts = run_cli("modes " + half_car + " --set front.suspension=strut");
+  ASSERT_EQ(struts.exit_code, 0) << struts.output;
+  EXPECT_NE(struts.output.find("slip "), std::string::npos) << struts.output;
+  EXPECT_NE(struts.output.find("stick "), std::string::npos) << struts.output;
+  EXPECT_NE(struts.output.find("pitch"), std::string::npos) << struts.output;
+  const CliRun refused = run_cli("modes " + half_car + " --state stick");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.output.find("passive axles only"), std::string::npos) << refused.output;
+  EXPECT_EQ(refused.output.find("natural"), std::string::npos) << refused.output;
 }
 
 TEST_F(Cli, SimulateWritesUnitAnnotatedCsvAndJsonStatistics) {

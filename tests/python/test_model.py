@@ -58,11 +58,17 @@ def test_input_error_is_a_value_error_and_names_the_dict():
         ridefit.model_from_dict({"model": "quarter_car", "sprung_mass_kg": 1.0})
 
 
-def test_a_half_car_loads_and_modes_refuses_it():
-    car = ridefit.load_model(dataset("vehicles/ajayi_half_car.yaml"))
+def test_a_half_car_loads_and_its_modes_equal_the_cli():
+    path = dataset("vehicles/ajayi_half_car.yaml")
+    car = ridefit.load_model(path)
     assert car.kind == "half_car"
-    with pytest.raises(ridefit.InputError, match="half car"):
-        ridefit.modes(car)
+    cli = run_cli("modes", path, "--json").json()
+    python = ridefit.modes(car)
+    assert_same_numbers(python, cli)
+    assert list(python["states"]) == ["passive"]
+    assert len(python["states"]["passive"]["modes"]) == 7
+    with pytest.raises(ridefit.InputError, match="passive axles only"):
+        ridefit.modes(car, state="stick")
 
 
 def test_docstrings_show_in_help():
