@@ -104,17 +104,30 @@ fitting::HysteresisRecord record_from_dict(const py::dict& record, std::size_t i
   return r;
 }
 
-std::vector<fitting::HysteresisRecord> records_of(const py::list& records) {
+// The records of the list (a CSV path gives a record per test, as the command reads it) and the
+// files they came from. Per-file values with a file of several tests are refused as the command
+// refuses them.
+std::vector<fitting::HysteresisRecord> records_of(const py::list& records,
+                                                  const std::vector<std::string>& per_file,
+                                                  std::vector<std::filesystem::path>& files) {
   std::vector<fitting::HysteresisRecord> result;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const py::handle item = records[i];
     if (py::isinstance<py::str>(item)) {
-      // As the command: a file of several tests (a segment or test column) is a record per test.
-      for (auto& test : fitting::load_hysteresis_tests(item.cast<std::string>())) {
-        result.push_back(std::move(test));
+      const std::string path = item.cast<std::string>();
+      const std::size_t before = result.size();
+      for (auto& test : fitting::load_hysteresis_tests(path)) result.push_back(std::move(test));
+      files.emplace_back(path);
+      if (!per_file.empty() && result.size() - before > 1) {
+        throw InputError(fmt::format(
+            "per_file {}: {} holds {} tests (a segment column), and per-file values are written "
+            "one model per file; fit the tests with shared parameters (a command column gives "
+            "each its own level through the command law), or split the file",
+            fmt::join(per_file, ","), path, result.size() - before));
       }
     } else if (py::isinstance<py::dict>(item)) {
       result.push_back(record_from_dict(item.cast<py::dict>(), i));
+      if (std::filesystem::exists(result.back().source)) files.emplace_back(result.back().source);
     } else {
       throw InputError(fmt::format(
           "records[{}]: a CSV path or a dict of arrays (time_s, displacement_m, force_N) expected",
@@ -185,7 +198,8 @@ void check_arguments(const HysteresisArguments& a, std::size_t record_count) {
 
 py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
                           const HysteresisArguments& a) {
-  std::vector<fitting::HysteresisRecord> records = records_of(record_list);
+  std::vector<std::filesystem::path> files;
+  std::vector<fitting::HysteresisRecord> records = records_of(record_list, a.per_file, files);
   const io::QuarterCarFile& file = model.quarter_car("fit_hysteresis");
   check_arguments(a, records.size());
   // With per-file parameters and several records, one model per record (as the CLI's -o).
@@ -197,10 +211,6 @@ py::object fit_hysteresis(const py::list& record_list, const ModelHandle& model,
       for (const auto& r : records)
         model_outputs.push_back(io::output_for_input(a.output, r.source));
     }
-  }
-  std::vector<std::filesystem::path> files;
-  for (const auto& r : records) {
-    if (std::filesystem::exists(r.source)) files.emplace_back(r.source);
   }
   if (const auto repeated = io::first_repeated_file(files)) {
     throw InputError(fmt::format(

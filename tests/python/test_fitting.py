@@ -55,6 +55,13 @@ def test_fit_hysteresis_of_a_file_of_tests_equals_the_cli(tmp_path, passat):
                                  interpolation="linear")
     assert_same_numbers(fit, cli, rtol=1e-6, skip=("written",))
     assert len(fit["fitted_force_N"]) == 2
+    # Per-file values are one model per file: refused for a file of several tests, as by the CLI.
+    message = run_cli("fit", "hysteresis", tests, "--model", passat, "--free", FREE,
+                      "--per-file", "coulomb_force_N", expect=2).error_message()
+    with pytest.raises(ridefit.InputError) as error:
+        ridefit.fit_hysteresis(str(tests), passat, free=FREE.split(","),
+                               per_file=["coulomb_force_N"])
+    assert str(error.value).replace("per_file", "--per-file") == message
 
 
 def test_fit_hysteresis_refuses_what_the_cli_refuses(passat):

@@ -60,15 +60,16 @@ void write_shape(std::ostream& out, const ResidualShape& shape) {
       "The force the final model lacks (measured − simulated) regressed on terms of travel about "
       "mid-stroke ({:.4g} mm, half stroke {:.3g} mm), velocity, acceleration and the model's own "
       "force; each kept term, fitted on the training records, lowers the judging records' residual "
-      "by at least 5 % and stands 4 standard errors from 0. A suggestion for a new effect, not an "
-      "effect of the library. Together the terms take {:.0f} % of the judged residual's sum of "
-      "squares.\n\n",
-      1e3 * shape.travel_centre_m, 1e3 * shape.half_stroke_m, 100.0 * shape.judged_share);
-  out << "| term | what it says | coefficient (SI) | of the judged residual |\n| --- | --- | --- | "
+      "by at least {:.0f} % and stands {:.3g} standard errors from 0. A suggestion for a new "
+      "effect, not an effect of the library. Together the terms take {:.0f} % of the judged "
+      "residual's sum of squares.\n\n",
+      1e3 * shape.travel_centre_m, 1e3 * shape.half_stroke_m, 100.0 * shape.options.min_share,
+      shape.options.min_z, 100.0 * shape.judged_share);
+  out << "| term | what it says | coefficient | of the judged residual |\n| --- | --- | --- | "
          "--- |\n";
   for (const auto& t : shape.terms) {
-    out << fmt::format("| {} | {} | {:.4g} ± {:.2g} {} | {:.1f} % |\n", t.id, t.words,
-                       t.coefficient, t.standard_error, t.unit, 100.0 * t.judged_share);
+    out << fmt::format("| {} | {} | {} | {:.1f} % |\n", t.id, t.words, coefficient_text(t),
+                       100.0 * t.judged_share);
   }
   out << "\n";
 }

@@ -58,8 +58,10 @@ constexpr std::array<Term, 13> kTerms{{
      "a spring that softens with travel either way"},
     {"travel_squared", "N/m^2", "N/mm²", 1e-6,
      [](const Sample& s, const Scales&) { return s.travel_m * s.travel_m; },
-     "a one-sided spring: a tension growing with the square of travel either way",
-     "a one-sided spring: a compression growing with the square of travel either way"},
+     "an even force: a tension growing with the square of travel either way (a gas spring's "
+     "curvature, a geometric nonlinearity)",
+     "an even force: a compression growing with the square of travel either way (a gas "
+     "spring's curvature, a geometric nonlinearity)"},
     {"travel_beyond_half_stroke", "N/m", "N/mm", 1e-3,
      [](const Sample& s, const Scales& k) { return beyond(s.travel_m, 0.5 * k.half_stroke_m); },
      "a stop: force rising with travel beyond ±{knee} mm from mid-stroke",
@@ -96,10 +98,11 @@ constexpr std::array<Term, 13> kTerms{{
      "less friction than the model's"},
     {"acceleration", "kg", "kg", 1.0,
      [](const Sample& s, const Scales&) { return s.acceleration_m_per_s2; },
-     "a mass moving with the rod between actuator and load cell (force in proportion to the "
-     "rig's acceleration)",
-     "a force against the rig's acceleration (a mass beyond the load cell, or a lag)"},
-    {"model_force", "1", "", 1.0, [](const Sample& s, const Scales&) { return s.model_force_N; },
+     "a mass between the load cell and the damper whose inertia the record leaves in (the "
+     "rig's moving_mass_kg)",
+     "a force against the rig's acceleration (an inertia compensated twice, or a lag)"},
+    {"model_force", "1", "× the model's force", 1.0,
+     [](const Sample& s, const Scales&) { return s.model_force_N; },
      "the model's own force, scaled up (a gain above 1)",
      "the model's own force, scaled down (a gain below 1)"},
     {"travel_velocity", "N*s/m^2", "N·s/m per mm", 1e-3,
@@ -211,6 +214,7 @@ ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
   const SelectionRows judge = rows_of(judging, shape.travel_centre_m, scales);
   const SparseSelection selection = select_columns(train, judge, options);
   shape.judged_share = selection.judged_share;
+  shape.options = options;
   for (const auto& c : selection.columns) {
     const Term& term = kTerms[static_cast<std::size_t>(c.column)];
     ShapeTerm t;
@@ -229,15 +233,17 @@ ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
   return shape;
 }
 
+std::string coefficient_text(const ShapeTerm& t) {
+  const Term& term = term_of(t.id);
+  return fmt::format("{:+.3g} ± {:.2g} {}", term.shown_per_si * t.coefficient,
+                     term.shown_per_si * t.standard_error, term.shown_unit);
+}
+
 std::string describe(const ResidualShape& shape) {
   std::string text;
   for (const auto& t : shape.terms) {
-    const Term& term = term_of(t.id);
-    const double scale = term.shown_per_si;
-    text += fmt::format("{}{} ({:+.3g} ± {:.2g}{}{}, {:.0f} % of the judged residual)",
-                        text.empty() ? "" : "; ", t.words, scale * t.coefficient,
-                        scale * t.standard_error, term.shown_unit.empty() ? "" : " ",
-                        term.shown_unit, 100.0 * t.judged_share);
+    text += fmt::format("{}{} ({}, {:.0f} % of the judged residual)", text.empty() ? "" : "; ",
+                        t.words, coefficient_text(t), 100.0 * t.judged_share);
   }
   return text;
 }

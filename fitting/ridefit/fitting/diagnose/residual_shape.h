@@ -10,7 +10,7 @@ namespace ridefit::fitting::diagnose {
 // What a disagreement looks like that no effect of the library explains: the force the model
 // lacks on the rig (measured − simulated) regressed on a small basis of physically named terms of
 // the rig's travel, velocity and acceleration and of the model's own force (a stiffness, a
-// progressive or one-sided spring, a stop beyond part of the stroke, damping that grows or
+// progressive spring or an even force in travel, a stop beyond part of the stroke, damping that grows or
 // flattens with speed or differs between compression and rebound, a friction level, a mass, a
 // gain). A suggestion for a new effect in words, never a named library effect.
 //
@@ -43,6 +43,7 @@ struct ResidualShape {
   // Travel terms are taken about the training records' mid-stroke, over their half stroke.
   double travel_centre_m = 0.0;
   double half_stroke_m = 0.0;
+  SparseSelectionOptions options;  // the thresholds the terms passed
 };
 
 // The shape of `training`'s and `judging`'s missing force. InputError for bad options, no
@@ -52,8 +53,11 @@ ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
                              const std::vector<ShapeSamples>& judging,
                              const SparseSelectionOptions& options = {});
 
-// The terms in words with their coefficients, "; " between them ("" for none): "a force of one
-// sign growing with the square of travel either way (x−x₀)² (+4.02 ± 0.05 N/mm², 91 % of the
+// A term's coefficient and standard error as an engineer reads them: "+4.02 ± 0.05 N/mm²".
+std::string coefficient_text(const ShapeTerm& term);
+
+// The terms in words with their coefficients, "; " between them ("" for none): "an even force: a
+// tension growing with the square of travel either way (…) (+4.02 ± 0.05 N/mm², 91 % of the
 // judged residual)".
 std::string describe(const ResidualShape& shape);
 

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "ridefit/common/errors.h"
 #include "ridefit/signal/correlation_time.h"
@@ -45,20 +46,20 @@ Fit least_squares(const Eigen::MatrixXd& a, const Eigen::VectorXd& y, const std:
 
 void SparseSelectionOptions::validate() const {
   if (max_terms < 1) {
-    throw InputError(fmt::format("residual shape: max_terms {}: expected at least 1", max_terms));
+    throw InputError(fmt::format("shape selection: max_terms {}: expected at least 1", max_terms));
   }
   if (!(min_share > 0.0 && min_share < 1.0)) {
     throw InputError(
-        fmt::format("residual shape: min_share {}: expected a share in (0, 1)", min_share));
+        fmt::format("shape selection: min_share {}: expected a share in (0, 1)", min_share));
   }
   if (!(min_z > 0.0) || !std::isfinite(min_z)) {
     throw InputError(
-        fmt::format("residual shape: min_z {}: expected a finite value above 0", min_z));
+        fmt::format("shape selection: min_z {}: expected a finite value above 0", min_z));
   }
 }
 
 SparseSelection select_columns(const SelectionRows& training, const SelectionRows& judging,
-                               const SparseSelectionOptions& options) {
+                               const SparseSelectionOptions& options, const SelectionRows* all) {
   options.validate();
   SparseSelection selection;
   const Eigen::Index width = training.basis.cols();
@@ -111,13 +112,24 @@ SparseSelection select_columns(const SelectionRows& training, const SelectionRow
   if (kept.empty()) return selection;
 
   // The reported coefficients from every row.
-  Eigen::MatrixXd all(train.rows() + judge.rows(), width);
-  all << train, judge;
-  Eigen::VectorXd target(all.rows());
-  target << training.target, judging.target;
-  std::vector<std::size_t> lengths = training.lengths;
-  lengths.insert(lengths.end(), judging.lengths.begin(), judging.lengths.end());
-  const Fit fit = least_squares(all, target, kept, lengths);
+  SelectionRows every;
+  if (all != nullptr) {
+    every = *all;
+  } else {
+    every.basis.resize(training.basis.rows() + judging.basis.rows(), width);
+    every.basis << training.basis, judging.basis;
+    every.target.resize(every.basis.rows());
+    every.target << training.target, judging.target;
+    every.lengths = training.lengths;
+    every.lengths.insert(every.lengths.end(), judging.lengths.begin(), judging.lengths.end());
+  }
+  if (every.basis.cols() != width) {
+    throw std::invalid_argument("select_columns: every row's basis has another width");
+  }
+  for (Eigen::Index j = 0; j < width; ++j) {
+    if (scale(j) > 0.0 && std::isfinite(scale(j))) every.basis.col(j) /= scale(j);
+  }
+  const Fit fit = least_squares(every.basis, every.target, kept, every.lengths);
   for (std::size_t i = 0; i < kept.size(); ++i) {
     const auto e = static_cast<Eigen::Index>(i);
     const double s = scale(kept[i]);

@@ -48,8 +48,12 @@ struct SparseSelection {
 };
 
 // The selection; columns that are zero on the training rows cannot enter. Empty when nothing
-// passes, or when a side has fewer rows than 10.
+// passes, or when a side has fewer rows than 10. The coefficients are fitted on `all` when given
+// (every row in its own order, where training and judging rows interleave, as a spectrum's even
+// and odd bins do: its correlation time is measured along that order), else on the training rows
+// followed by the judging rows.
 SparseSelection select_columns(const SelectionRows& training, const SelectionRows& judging,
-                               const SparseSelectionOptions& options);
+                               const SparseSelectionOptions& options,
+                               const SelectionRows* all = nullptr);
 
 }  // namespace ridefit::fitting::diagnose

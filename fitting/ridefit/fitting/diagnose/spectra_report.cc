@@ -47,16 +47,16 @@ void write_shape(std::ostream& out, const SpectralShape& shape) {
       "the final model's map, regressed on named shapes (a level, a tilt per decade, a resonance "
       "or a low-pass on a grid of six frequencies per octave, the model's spectrum shifted along "
       "frequency); each kept shape, fitted on the even bins, lowers the odd bins' sum of squares "
-      "by at least 5 % and stands 4 standard errors from 0. A suggestion for a new effect, not an "
-      "effect of the library. Together they take {:.0f} % of the judged ratio's sum of "
-      "squares.\n\n",
-      100.0 * shape.judged_share);
+      "by at least {:.0f} % and stands {:.3g} standard errors from 0. A suggestion for a new "
+      "effect, not an effect of the library. Together they take {:.0f} % of the judged ratio's "
+      "sum of squares.\n\n",
+      100.0 * shape.options.min_share, shape.options.min_z, 100.0 * shape.judged_share);
   out << "| shape | channel | frequency [Hz] | what it says | coefficient | of the judged ratio "
          "|\n| --- | --- | --- | --- | --- | --- |\n";
   for (const auto& t : shape.terms) {
-    out << fmt::format("| {} | {} | {} | {} | {:.4g} ± {:.2g} {} | {:.1f} % |\n", t.id, t.channel,
+    out << fmt::format("| {} | {} | {} | {} | {} | {:.1f} % |\n", t.id, t.channel,
                        t.frequency_Hz > 0.0 ? fmt::format("{:.3g}", t.frequency_Hz) : "", t.words,
-                       t.coefficient, t.standard_error, t.unit, 100.0 * t.judged_share);
+                       coefficient_text(t), 100.0 * t.judged_share);
   }
   out << "\n";
 }

@@ -181,36 +181,44 @@ SpectralShape spectral_shape(const DisagreementMap& map, double band_low_Hz, dou
   }
   SpectralShape shape;
   if (columns.empty()) return shape;
-  // Even bins fit, odd bins judge: each channel a part of its own.
-  SelectionRows fit, judge;
-  for (auto* side : {&fit, &judge}) {
-    const std::size_t parity = side == &fit ? 0 : 1;
+  // Even bins fit, odd bins judge, each channel a part of its own; the reported coefficients
+  // from every bin in order (neighbouring bins correlate: their correlation time is taken along
+  // the spectrum).
+  auto rows_of = [&](int parity) {  // 0 even, 1 odd, -1 every bin
+    SelectionRows side;
     std::size_t rows = 0;
     for (const auto& b : channels) {
       if (b.frequency_Hz.size() < 10) continue;
-      const std::size_t n = (b.frequency_Hz.size() + 1 - parity) / 2;
-      side->lengths.push_back(n);
+      const std::size_t n =
+          parity < 0 ? b.frequency_Hz.size()
+                     : (b.frequency_Hz.size() + 1 - static_cast<std::size_t>(parity)) / 2;
+      side.lengths.push_back(n);
       rows += n;
     }
-    side->basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows),
-                                        static_cast<Eigen::Index>(columns.size()));
-    side->target.resize(static_cast<Eigen::Index>(rows));
+    side.basis = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows),
+                                       static_cast<Eigen::Index>(columns.size()));
+    side.target.resize(static_cast<Eigen::Index>(rows));
     Eigen::Index row = 0;
+    const std::size_t first = parity < 0 ? 0 : static_cast<std::size_t>(parity);
+    const std::size_t stride = parity < 0 ? 1 : 2;
     for (std::size_t ch = 0; ch < channels.size(); ++ch) {
       const Bins& b = channels[ch];
       if (b.frequency_Hz.size() < 10) continue;
-      for (std::size_t k = parity; k < b.frequency_Hz.size(); k += 2, ++row) {
-        side->target(row) = b.missing_dB[k];
+      for (std::size_t k = first; k < b.frequency_Hz.size(); k += stride, ++row) {
+        side.target(row) = b.missing_dB[k];
         for (std::size_t j = 0; j < columns.size(); ++j) {
           if (columns[j].channel == ch) {
-            side->basis(row, static_cast<Eigen::Index>(j)) = value(columns[j], b, k, centre_Hz);
+            side.basis(row, static_cast<Eigen::Index>(j)) = value(columns[j], b, k, centre_Hz);
           }
         }
       }
     }
-  }
-  const SparseSelection selection = select_columns(fit, judge, options);
+    return side;
+  };
+  const SelectionRows fit = rows_of(0), judge = rows_of(1), every = rows_of(-1);
+  const SparseSelection selection = select_columns(fit, judge, options, &every);
   shape.judged_share = selection.judged_share;
+  shape.options = options;
   for (const auto& s : selection.columns) {
     const Column& c = columns[static_cast<std::size_t>(s.column)];
     SpectralShapeTerm t;
@@ -227,16 +235,19 @@ SpectralShape spectral_shape(const DisagreementMap& map, double band_low_Hz, dou
   return shape;
 }
 
+std::string coefficient_text(const SpectralShapeTerm& t) {
+  if (t.id == "frequency_shift") {
+    return fmt::format("{:+.3g} ± {:.2g} %", 100.0 * t.coefficient, 100.0 * t.standard_error);
+  }
+  return fmt::format("{:+.3g} ± {:.2g} {}", t.coefficient, t.standard_error,
+                     t.unit == "1" ? "× the named shape" : t.unit);
+}
+
 std::string describe(const SpectralShape& shape) {
   std::string text;
   for (const auto& t : shape.terms) {
-    const bool shift = t.id == "frequency_shift";
-    const double shown = shift ? 100.0 * t.coefficient : t.coefficient;
-    const double error = shift ? 100.0 * t.standard_error : t.standard_error;
-    const std::string unit = shift ? " %" : t.unit == "1" ? " × the named shape" : " " + t.unit;
-    text +=
-        fmt::format("{}{} ({:+.3g} ± {:.2g}{}, {:.0f} % of the judged ratio)",
-                    text.empty() ? "" : "; ", t.words, shown, error, unit, 100.0 * t.judged_share);
+    text += fmt::format("{}{} ({}, {:.0f} % of the judged ratio)", text.empty() ? "" : "; ",
+                        t.words, coefficient_text(t), 100.0 * t.judged_share);
   }
   return text;
 }

@@ -36,13 +36,20 @@ struct SpectralShapeTerm {
 
 struct SpectralShape {
   std::vector<SpectralShapeTerm> terms;  // in the order they entered; none: nothing to say
+  // What the terms remove together on the judging bins. Optimistic: each term was chosen as
+  // the best of about 150 on those bins, and they neighbour the fitted ones.
   double judged_share = 0.0;
+  SparseSelectionOptions options;  // the thresholds the terms passed
 };
 
 // The shape of `map`'s ratio over [band_low_Hz, band_high_Hz] (every channel). InputError for bad
 // options or a band not 0 < low < high. Bins whose ratio is not finite are left out.
 SpectralShape spectral_shape(const DisagreementMap& map, double band_low_Hz, double band_high_Hz,
                              const SparseSelectionOptions& options = {});
+
+// A term's coefficient as an engineer reads it: "+1.74 ± 0.14 dB", "+6.7 ± 0.4 %", "+1.13 ± 0.02 ×
+// the named shape".
+std::string coefficient_text(const SpectralShapeTerm& term);
 
 // The terms in words with their coefficients, "; " between them ("" for none).
 std::string describe(const SpectralShape& shape);
