@@ -85,21 +85,8 @@ nlohmann::json diagnose_loops(const ModelHandle& model, const DiagnoseArguments&
   if (a.tolerances) options.baseline_tolerances = *a.tolerances;  // else the strut's sheet
   options.selection.threads = a.threads;
   const io::QuarterCarFile& file = model.quarter_car("diagnose");
-  std::vector<fitting::HysteresisRecord> records;
-  // As the command: a file of several tests (a segment or test column) gives one record per test.
-  for (const auto& path : a.records) {
-    for (auto& test : fitting::load_hysteresis_tests(path)) records.push_back(std::move(test));
-  }
-  const dx::LoopDiagnosisData data = dx::split_loops(records);
-  for (const auto* part : {&data.training, &data.held_out}) {
-    for (const auto& r : *part) {
-      if (r.time_s.size() < 40) {
-        throw InputError(
-            fmt::format("{}: {} samples to fit or judge, too few for a loop; give a longer record",
-                        r.source, r.time_s.size()));
-      }
-    }
-  }
+  std::vector<std::filesystem::path> files(a.records.begin(), a.records.end());
+  const dx::LoopDiagnosisData data = dx::load_loop_diagnosis_data(files);
   dx::DiagnosisModel baseline;
   baseline.car = file.make_model();
   baseline.kind = dx::DataKind::kStrutLoops;

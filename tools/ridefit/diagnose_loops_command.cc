@@ -54,23 +54,8 @@ DiagnosisOutput diagnose_loops(const DiagnoseFlags& flags, bool figure,
   check_outputs();
 
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
-  std::vector<fitting::HysteresisRecord> records;
-  // A file of several tests (a segment or test column) gives one record per test, each cut to
-  // its motion: five currents in one file are fitted on the 1st, 3rd, 5th and judged on the
-  // others, as separate files would be.
-  for (const auto& file : flags.records) {
-    for (auto& test : fitting::load_hysteresis_tests(file)) records.push_back(std::move(test));
-  }
-  const dx::LoopDiagnosisData data = dx::split_loops(records);
-  for (const auto* part : {&data.training, &data.held_out}) {
-    for (const auto& r : *part) {
-      if (r.time_s.size() < 40) {
-        throw InputError(
-            fmt::format("{}: {} samples to fit or judge, too few for a loop; give a longer record",
-                        r.source, r.time_s.size()));
-      }
-    }
-  }
+  std::vector<std::filesystem::path> files(flags.records.begin(), flags.records.end());
+  const dx::LoopDiagnosisData data = dx::load_loop_diagnosis_data(files);
 
   dx::DiagnosisModel baseline;
   baseline.car = model_file.make_model();

@@ -246,6 +246,24 @@ LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records) {
   return data;
 }
 
+LoopDiagnosisData load_loop_diagnosis_data(const std::vector<std::filesystem::path>& files) {
+  std::vector<HysteresisRecord> records;
+  for (const auto& file : files) {
+    for (auto& test : load_hysteresis_tests(file)) records.push_back(std::move(test));
+  }
+  LoopDiagnosisData data = split_loops(records);
+  for (const auto* part : {&data.training, &data.held_out}) {
+    for (const auto& r : *part) {
+      if (r.time_s.size() < 40) {
+        throw InputError(
+            fmt::format("{}: {} samples to fit or judge, too few for a loop; give a longer record",
+                        r.source, r.time_s.size()));
+      }
+    }
+  }
+  return data;
+}
+
 DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnosisData& data,
                                const LoopDiagnosisOptions& options,
                                const std::function<void(const std::string&)>& progress) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,6 +30,12 @@ struct LoopDiagnosisData {
 // second's lead-in). Several: they alternate, the 1st, 3rd, … are fitted and the 2nd, 4th, …
 // judge, each simulated from rest at its own first sample.
 LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records);
+
+// The rig files' tests (a file of several tests, by its segment or test column, gives a record
+// per test, each cut to its motion: five currents in one file are fitted on the 1st, 3rd, 5th and
+// judged on the others, as separate files would be), split by split_loops. InputError naming the
+// record for a part with fewer than 40 samples to fit or judge; the loader's own otherwise.
+LoopDiagnosisData load_loop_diagnosis_data(const std::vector<std::filesystem::path>& files);
 
 // Fits the baseline strut (`baseline.strut`), maps its loops against the held-out records, tries
 // each effect that applies to loops, accepts the significant best, up to selection.max_effects
