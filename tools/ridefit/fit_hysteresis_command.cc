@@ -141,7 +141,9 @@ nlohmann::json validation_json(const std::vector<fitting::RecordPrediction>& val
                  {"nrmse_percent", p.nrmse_percent},
                  {"residual_rms_N", p.residual_rms_N},
                  {"scored_from_s", p.score_from_s},
-                 {"samples", p.scored}});
+                 {"samples", p.scored},
+                 {"excitation_band_Hz", p.excitation_band_Hz},
+                 {"in_band_nrmse_percent", p.in_band_nrmse_percent}});
   }
   return j;
 }
@@ -261,10 +263,14 @@ void run(const FitHysteresisFlags& flags) {
   } else {
     fitting::write_summary(std::cout, fitted.fit, fitted.report);
     for (const auto& p : fitted.validation) {
-      std::cout << fmt::format("  validation: NRMSE {:6.2f} % (residual RMS {:.4g} N{})  {}\n",
+      std::cout << fmt::format("  validation: NRMSE {:6.2f} % (residual RMS {:.4g} N{}{})  {}\n",
                                p.nrmse_percent, p.residual_rms_N,
                                p.score_from_s > 0.0
                                    ? fmt::format(", scored from {:g} s", p.score_from_s)
+                                   : std::string(),
+                               p.excitation_band_Hz > 0.0
+                                   ? fmt::format("; {:.2f} % within the motion's band, 0–{:.3g} Hz",
+                                                 p.in_band_nrmse_percent, p.excitation_band_Hz)
                                    : std::string(),
                                p.source);
     }

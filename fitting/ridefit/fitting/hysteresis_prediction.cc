@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "ridefit/common/errors.h"
+#include "ridefit/signal/excitation_band.h"
+#include "ridefit/signal/periodicity.h"
 
 namespace ridefit::fitting {
 
@@ -62,6 +64,28 @@ std::vector<RecordPrediction> predict_records(const std::vector<HysteresisRecord
     }
     p.residual_rms_N = p.scored > 0 ? std::sqrt(squares / static_cast<double>(p.scored)) : 0.0;
     p.nrmse_percent = nrmse_percent(r.force_N, p.force_N, first);
+    p.in_band_nrmse_percent = p.nrmse_percent;
+    const std::size_t n = r.time_s.size();
+    // Only for a random motion: under a sine or triangle the force's harmonics above the motion's
+    // band are the damper's own nonlinearity, which a model must follow, not noise.
+    const std::span<const double> scored_t(r.time_s.data() + first, p.scored);
+    const std::span<const double> scored_x(r.displacement_m.data() + first, p.scored);
+    if (p.scored >= 128 && r.time_s[n - 1] > r.time_s[first] &&
+        !signal::looks_periodic(scored_t, scored_x)) {
+      const simulate::RigDisplacement x(r.time_s, r.displacement_m, solver.interpolation,
+                                        r.velocity_m_per_s);
+      std::vector<double> velocity, residual;
+      for (std::size_t k = first; k < n; ++k) {
+        velocity.push_back(x.rate_at(r.time_s[k]));
+        residual.push_back(p.force_N[k] - r.force_N[k]);
+      }
+      // (uneven steps, as printed time stamps give, are taken at their mean rate)
+      const double rate_Hz =
+          static_cast<double>(p.scored - 1) / (r.time_s[n - 1] - r.time_s[first]);
+      const signal::ExcitationBand band = signal::excitation_band(velocity, residual, rate_Hz);
+      p.excitation_band_Hz = band.band_Hz;
+      p.in_band_nrmse_percent = p.nrmse_percent * std::sqrt(band.residual_in_band_share);
+    }
     out.push_back(std::move(p));
   }
   return out;

@@ -21,6 +21,12 @@ struct RecordPrediction {
   // RMS of the residual over the scored samples' measured spread about their own mean (%): each
   // test normalised by its own force, as the fit's per-record NRMSE is.
   double nrmse_percent = 0.0;
+  // A random motion's band (signal/excitation_band.h: 99 % of the rig velocity's power below it)
+  // and the NRMSE of the residual's part within it: what a model driven by the motion could reach
+  // when the rest is the load cell's noise. 0 and nrmse_percent for a periodic test (its force's
+  // harmonics are the damper's) and when the scored part is under 128 samples.
+  double excitation_band_Hz = 0.0;
+  double in_band_nrmse_percent = 0.0;
 };
 
 // NRMSE (%) of `model_N` against `measured_N` over samples [first, n): RMS residual over the
