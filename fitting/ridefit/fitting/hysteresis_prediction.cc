@@ -7,7 +7,6 @@
 
 #include "ridefit/common/errors.h"
 #include "ridefit/signal/excitation_band.h"
-#include "ridefit/signal/periodicity.h"
 
 namespace ridefit::fitting {
 
@@ -66,12 +65,7 @@ std::vector<RecordPrediction> predict_records(const std::vector<HysteresisRecord
     p.nrmse_percent = nrmse_percent(r.force_N, p.force_N, first);
     p.in_band_nrmse_percent = p.nrmse_percent;
     const std::size_t n = r.time_s.size();
-    // Only for a random motion: under a sine or triangle the force's harmonics above the motion's
-    // band are the damper's own nonlinearity, which a model must follow, not noise.
-    const std::span<const double> scored_t(r.time_s.data() + first, p.scored);
-    const std::span<const double> scored_x(r.displacement_m.data() + first, p.scored);
-    if (p.scored >= 128 && r.time_s[n - 1] > r.time_s[first] &&
-        !signal::looks_periodic(scored_t, scored_x)) {
+    if (p.scored >= 128 && r.time_s[n - 1] > r.time_s[first]) {
       const simulate::RigDisplacement x(r.time_s, r.displacement_m, solver.interpolation,
                                         r.velocity_m_per_s);
       std::vector<double> velocity, residual;
@@ -83,8 +77,12 @@ std::vector<RecordPrediction> predict_records(const std::vector<HysteresisRecord
       const double rate_Hz =
           static_cast<double>(p.scored - 1) / (r.time_s[n - 1] - r.time_s[first]);
       const signal::ExcitationBand band = signal::excitation_band(velocity, residual, rate_Hz);
-      p.excitation_band_Hz = band.band_Hz;
-      p.in_band_nrmse_percent = p.nrmse_percent * std::sqrt(band.residual_in_band_share);
+      // Only for a random motion: under a sine or triangle the force's harmonics above the
+      // motion's band are the damper's own nonlinearity, which a model must follow, not noise.
+      if (band.repeat_correlation < 0.5) {
+        p.excitation_band_Hz = band.band_Hz;
+        p.in_band_nrmse_percent = p.nrmse_percent * std::sqrt(band.residual_in_band_share);
+      }
     }
     out.push_back(std::move(p));
   }

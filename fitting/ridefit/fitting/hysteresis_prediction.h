@@ -23,8 +23,9 @@ struct RecordPrediction {
   double nrmse_percent = 0.0;
   // A random motion's band (signal/excitation_band.h: 99 % of the rig velocity's power below it)
   // and the NRMSE of the residual's part within it: what a model driven by the motion could reach
-  // when the rest is the load cell's noise. 0 and nrmse_percent for a periodic test (its force's
-  // harmonics are the damper's) and when the scored part is under 128 samples.
+  // when the rest is the load cell's noise. 0 and nrmse_percent for a periodic test (its
+  // velocity repeats: ExcitationBand::repeat_correlation; its force's harmonics are the damper's)
+  // and when the scored part is under 128 samples.
   double excitation_band_Hz = 0.0;
   double in_band_nrmse_percent = 0.0;
 };

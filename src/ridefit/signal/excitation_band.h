@@ -11,6 +11,11 @@ namespace ridefit::signal {
 struct ExcitationBand {
   double band_Hz = 0.0;  // the lowest frequency below which input_share of the input's power lies
   double residual_in_band_share = 1.0;  // of the residual's power, below band_Hz
+  // The input's largest autocorrelation (normalised, unbiased) beyond its first zero crossing, up
+  // to half the record: about 1 for a sine or triangle test, which repeats its cycle; small for a
+  // random motion. Above a half the motion counts as periodic, and what lies above its band is
+  // the damper's own harmonics as much as noise.
+  double repeat_correlation = 0.0;
 };
 
 // `input` (a rig's velocity) and `residual` at the same uniform samples. Both spectra by Welch
