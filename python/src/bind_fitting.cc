@@ -115,16 +115,12 @@ std::vector<fitting::HysteresisRecord> records_of(const py::list& records,
     const py::handle item = records[i];
     if (py::isinstance<py::str>(item)) {
       const std::string path = item.cast<std::string>();
-      const std::size_t before = result.size();
-      for (auto& test : fitting::load_hysteresis_tests(path)) result.push_back(std::move(test));
-      files.emplace_back(path);
-      if (!per_file.empty() && result.size() - before > 1) {
-        throw InputError(fmt::format(
-            "per_file {}: {} holds {} tests (a segment column), and per-file values are written "
-            "one model per file; fit the tests with shared parameters (a command column gives "
-            "each its own level through the command law), or split the file",
-            fmt::join(per_file, ","), path, result.size() - before));
+      for (auto& test : fitting::load_rig_files(
+               {path},
+               per_file.empty() ? "" : fmt::format("per_file {}", fmt::join(per_file, ",")))) {
+        result.push_back(std::move(test));
       }
+      files.emplace_back(path);
     } else if (py::isinstance<py::dict>(item)) {
       result.push_back(record_from_dict(item.cast<py::dict>(), i));
       if (std::filesystem::exists(result.back().source)) files.emplace_back(result.back().source);

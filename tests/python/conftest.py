@@ -52,6 +52,19 @@ def read_csv(path):
     return {h.split("[")[0]: data[:, i] for i, h in enumerate(header)}
 
 
+def write_two_tests(source, path):
+    """The CSV `source` (time, displacement in mm, force) as two tests in one file, its halves
+    numbered by a segment column, written to `path`."""
+    columns = read_csv(source)
+    n = len(columns["time"])
+    with open(path, "w") as f:
+        f.write("time[s],displacement[mm],force[N],segment[1]\n")
+        for k in range(n):
+            f.write(f"{float(columns['time'][k])!r},{float(columns['displacement'][k])!r},"
+                    f"{float(columns['force'][k])!r},{1 if k < n // 2 else 2}\n")
+    return path
+
+
 def assert_same_numbers(python_value, cli_value, path="", rtol=1e-9, skip=()):
     """Every number of the CLI's JSON equals Python's (dicts recursively, lists element-wise);
     keys in `skip` (e.g. wall times, file names) are left out."""

@@ -3,7 +3,7 @@
 import pytest
 
 import ridefit
-from conftest import assert_same_numbers, dataset, read_csv, run_cli
+from conftest import assert_same_numbers, dataset, read_csv, run_cli, write_two_tests
 
 # Wall times, file names and paths of what the CLI wrote.
 RUN_KEYS = ("wall_time_s", "report", "model", "files", "journal", "result", "written")
@@ -54,14 +54,7 @@ def test_diagnose_of_rig_loops_equals_the_cli(tmp_path, passat):
 def test_diagnose_splits_a_file_of_tests_as_the_cli(tmp_path, passat):
     # The shipped rig record as two tests in one file (a segment column): each test is a record
     # of its own, fitted and judged apart, as the command does it.
-    columns = read_csv(dataset("hidden/rig_baseline_only.csv"))
-    n = len(columns["time"])
-    tests = tmp_path / "two_tests.csv"
-    with open(tests, "w") as f:
-        f.write("time[s],displacement[mm],force[N],segment[1]\n")
-        for k in range(n):
-            f.write(f"{float(columns['time'][k])!r},{float(columns['displacement'][k])!r},"
-                    f"{float(columns['force'][k])!r},{1 if k < n // 2 else 2}\n")
+    tests = write_two_tests(dataset("hidden/rig_baseline_only.csv"), tmp_path / "two_tests.csv")
     cli = run_cli("diagnose", passat, tests, "--effects", "gas_force", "--threads", 1, "--json",
                   "-q", "-o", tmp_path / "loops").json()
     result = ridefit.diagnose(passat, tests, effects="gas_force", threads=1)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import ridefit
-from conftest import assert_same_numbers, dataset, read_csv, run_cli
+from conftest import assert_same_numbers, dataset, read_csv, run_cli, write_two_tests
 
 TRIANGLE = dataset("lab/triangle_3mm_1mmps.csv")
 FREE = "dahl_sigma0_N_per_m,coulomb_force_N,dahl_exponent"
@@ -41,14 +41,7 @@ def test_fit_hysteresis_from_a_file_with_bounds_and_loss_equals_the_cli(passat):
 def test_fit_hysteresis_of_a_file_of_tests_equals_the_cli(tmp_path, passat):
     # The triangle record as two tests in one file (a segment column): a record per test, each
     # from its own rest state, as the command reads it.
-    columns = read_csv(TRIANGLE)
-    n = len(columns["time"])
-    tests = tmp_path / "two_tests.csv"
-    with open(tests, "w") as f:
-        f.write("time[s],displacement[mm],force[N],segment[1]\n")
-        for k in range(n):
-            f.write(f"{float(columns['time'][k])!r},{float(columns['displacement'][k])!r},"
-                    f"{float(columns['force'][k])!r},{1 if k < n // 2 else 2}\n")
+    tests = write_two_tests(TRIANGLE, tmp_path / "two_tests.csv")
     cli = run_cli("fit", "hysteresis", tests, "--model", passat, "--free", FREE,
                   "--interpolation", "linear", "--json").json()
     fit = ridefit.fit_hysteresis(str(tests), passat, free=FREE.split(","),

@@ -152,17 +152,9 @@ nlohmann::json validation_json(const std::vector<fitting::RecordPrediction>& val
 HysteresisFitRun fit_records(const FitHysteresisFlags& flags) {
   const io::QuarterCarFile model_file = io::load_quarter_car(flags.model_file);
   HysteresisFitRun run;
-  for (const auto& file : flags.files) {
-    const std::size_t before = run.records.size();
-    for (auto& test : fitting::load_hysteresis_tests(file)) run.records.push_back(std::move(test));
-    if (!flags.per_file.empty() && run.records.size() - before > 1) {
-      throw InputError(fmt::format(
-          "--per-file {}: {} holds {} tests (a segment column), and per-file values are written "
-          "one model per file; fit the tests with shared parameters (a command column gives each "
-          "its own level through the command law), or split the file",
-          fmt::join(flags.per_file, ","), file, run.records.size() - before));
-    }
-  }
+  run.records = fitting::load_rig_files(
+      std::vector<std::filesystem::path>(flags.files.begin(), flags.files.end()),
+      flags.per_file.empty() ? "" : fmt::format("--per-file {}", fmt::join(flags.per_file, ",")));
   fitting::HysteresisFitOptions options;
   options.free = flags.free;
   options.per_file = flags.per_file;

@@ -204,4 +204,21 @@ std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path&
   return out;
 }
 
+std::vector<HysteresisRecord> load_rig_files(const std::vector<std::filesystem::path>& files,
+                                             const std::string& per_file_option) {
+  std::vector<HysteresisRecord> records;
+  for (const auto& file : files) {
+    std::vector<HysteresisRecord> tests = load_hysteresis_tests(file);
+    if (!per_file_option.empty() && tests.size() > 1) {
+      throw InputError(fmt::format(
+          "{}: {} holds {} tests (a segment column), and per-file values are written one model "
+          "per file; fit the tests with shared parameters (a command column gives each its own "
+          "level through the command law), or split the file",
+          per_file_option, file.string(), tests.size()));
+    }
+    for (auto& test : tests) records.push_back(std::move(test));
+  }
+  return records;
+}
+
 }  // namespace ridefit::fitting

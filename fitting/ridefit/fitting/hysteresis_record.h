@@ -48,6 +48,12 @@ HysteresisRecord load_hysteresis_record(const std::filesystem::path& csv_file);
 // (quantised_displacement.h).
 std::vector<HysteresisRecord> load_hysteresis_tests(const std::filesystem::path& file);
 
+// The tests of each file (load_hysteresis_tests), in order. With `per_file_option` (the caller's
+// words for per-file values, "--per-file coulomb_force_N") a file of several tests is an
+// InputError that starts with them: per-file values are written one model per file.
+std::vector<HysteresisRecord> load_rig_files(const std::vector<std::filesystem::path>& files,
+                                             const std::string& per_file_option = "");
+
 // Rows [first, last) of `r`, named `source`: every per-sample column (command, measured velocity)
 // cut alike, the displacement's treatment kept.
 HysteresisRecord rows_of(const HysteresisRecord& r, std::size_t first, std::size_t last,

@@ -247,11 +247,7 @@ LoopDiagnosisData split_loops(const std::vector<HysteresisRecord>& records) {
 }
 
 LoopDiagnosisData load_loop_diagnosis_data(const std::vector<std::filesystem::path>& files) {
-  std::vector<HysteresisRecord> records;
-  for (const auto& file : files) {
-    for (auto& test : load_hysteresis_tests(file)) records.push_back(std::move(test));
-  }
-  LoopDiagnosisData data = split_loops(records);
+  LoopDiagnosisData data = split_loops(load_rig_files(files));
   for (const auto* part : {&data.training, &data.held_out}) {
     for (const auto& r : *part) {
       if (r.time_s.size() < 40) {
