@@ -1,5 +1,6 @@
-// The weighing of a diagnosis's explanations: BIC weights against their definition, and the
-// verdict's words (the correlation time: tests/signal/correlation_time_test.cc).
+// The weighing of a diagnosis's explanations: the judging data's BIC weights against their
+// definition, and the verdict's words (the correlation time:
+// tests/signal/correlation_time_test.cc).
 #include "ridefit/fitting/diagnose/explanation_evidence.h"
 
 #include <gtest/gtest.h>
@@ -19,25 +20,27 @@ Explanation candidate(std::vector<std::string> effects, int k, double cost, doub
   e.training_cost = cost;
   e.held_out_cost = cost;
   e.residuals = 2000;
+  e.held_out_residuals = 1000;
   e.correlation_time = tau;
   return e;
 }
 
-TEST(ExplanationEvidence, WeightsAreBicWeightsOverTheIndependentResiduals) {
-  // τ = 10 on the best fit: n = 2000/10 = 200 independent residuals.
+TEST(ExplanationEvidence, WeightsAreBicWeightsOverTheIndependentJudgingResiduals) {
+  // τ = 10 on the best fit: n = 1000/10 = 100 independent judging residuals.
   std::vector<Explanation> e{candidate({}, 2, 120.0, 30.0), candidate({"a"}, 3, 100.0, 10.0),
                              candidate({"b"}, 3, 101.0, 12.0)};
   weigh_explanations(e);
   ASSERT_EQ(e.size(), 3u);
   EXPECT_EQ(e[0].effects, std::vector<std::string>{"a"});
   EXPECT_EQ(e[1].effects, std::vector<std::string>{"b"});
-  const double n = 200.0;
+  const double n = 100.0;
   auto bic = [&](double cost, int k) {
-    return n * std::log(4.0 * cost / 2000.0) + k * std::log(n);
+    return n * std::log(2.0 * cost / 1000.0) + k * std::log(n);
   };
   EXPECT_NEAR(e[0].bic, bic(100.0, 3), 1e-9);
-  const double ab = std::exp(-0.5 * (bic(101.0, 3) - bic(100.0, 3)));
-  const double an = std::exp(-0.5 * (bic(120.0, 2) - bic(100.0, 3)));
+  const double t = kEvidenceTemperature;
+  const double ab = std::exp(-0.5 * (bic(101.0, 3) - bic(100.0, 3)) / t);
+  const double an = std::exp(-0.5 * (bic(120.0, 2) - bic(100.0, 3)) / t);
   EXPECT_NEAR(e[0].probability, 1.0 / (1.0 + ab + an), 1e-12);
   EXPECT_NEAR(e[1].probability, ab / (1.0 + ab + an), 1e-12);
   EXPECT_NEAR(e[0].probability + e[1].probability + e[2].probability, 1.0, 1e-12);
@@ -47,8 +50,30 @@ TEST(ExplanationEvidence, AnExtraParameterThatFitsNothingMoreLoses) {
   std::vector<Explanation> e{candidate({}, 2, 100.0), candidate({"a"}, 3, 100.0)};
   weigh_explanations(e);
   EXPECT_TRUE(e[0].effects.empty());
-  // Odds ln(n)/2 in BIC: √n to one for n = 2000.
-  EXPECT_NEAR(e[0].probability / e[1].probability, std::sqrt(2000.0), 1e-6 * std::sqrt(2000.0));
+  // Odds ln(n)/(2T) in BIC over n = 1000 judging residuals: n^(1/(2T)) to one.
+  const double odds = std::pow(1000.0, 0.5 / kEvidenceTemperature);
+  EXPECT_NEAR(e[0].probability / e[1].probability, odds, 1e-6 * odds);
+}
+
+TEST(ExplanationEvidence, AnEffectThatFitsOnlyTheTrainingDataBetterGainsNothing) {
+  // "a" halves the training cost and leaves the judging cost where it was: it fitted the
+  // training data's noise (or stood in for a wrong baseline there), and loses by its parameter.
+  Explanation nothing = candidate({}, 2, 100.0);
+  Explanation a = candidate({"a"}, 3, 100.0);
+  a.training_cost = 50.0;
+  std::vector<Explanation> e{nothing, a};
+  weigh_explanations(e);
+  EXPECT_TRUE(e[0].effects.empty());
+  EXPECT_GT(e[0].probability, 0.99);
+  // Weighed on the training and judging data together, as before 2026-12-07, it had won.
+  Explanation a_train = a, nothing_train = nothing;
+  a_train.held_out_residuals = nothing_train.held_out_residuals = 0;
+  std::vector<Explanation> training_only{nothing_train, a_train};
+  weigh_explanations(training_only);
+  EXPECT_EQ(training_only[0].effects, std::vector<std::string>{"a"});
+  // With no judging residuals the cost is the whole cost over all residuals.
+  const double n = 2000.0;
+  EXPECT_NEAR(training_only[0].bic, n * std::log(2.0 * 150.0 / n) + 3.0 * std::log(n), 1e-9);
 }
 
 TEST(ExplanationEvidence, VerdictWordsSayHowSureAndWhatTheDataCannotTellApart) {
@@ -73,9 +98,10 @@ TEST(ExplanationEvidence, VerdictWordsSayHowSureAndWhatTheDataCannotTellApart) {
 }
 
 TEST(ExplanationEvidence, ANamedEffectIsAsProbableAsEveryExplanationThatContainsIt) {
-  // "a" alone, "a" with a "b" that fits next to nothing more (√n to one against it), and "c"
-  // far behind: that "a" is missing is nearly certain though "a" alone holds only √n/(√n + 1).
-  std::vector<Explanation> e{candidate({"a"}, 3, 100.0), candidate({"a", "b"}, 4, 99.99),
+  // "a" alone, "a" with a "b" that fits a little more (its parameter costs more than that: about
+  // 7 to one against it), and "c" far behind: that "a" is missing is nearly certain though "a"
+  // alone holds only about 7/8 of it.
+  std::vector<Explanation> e{candidate({"a"}, 3, 100.0), candidate({"a", "b"}, 4, 99.5),
                              candidate({"c"}, 3, 130.0), candidate({}, 2, 150.0)};
   weigh_explanations(e);
   const Explanation* alone = find_explanation(e, {"a"});

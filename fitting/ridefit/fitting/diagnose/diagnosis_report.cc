@@ -95,6 +95,8 @@ nlohmann::json explanations_json(const std::vector<Explanation>& explanations) {
                  {"free_parameters", e.free_parameters},
                  {"training_cost", e.training_cost},
                  {"held_out_cost", e.held_out_cost},
+                 {"residuals", e.residuals},
+                 {"held_out_residuals", e.held_out_residuals},
                  {"correlation_time_samples", e.correlation_time}});
   }
   return j;

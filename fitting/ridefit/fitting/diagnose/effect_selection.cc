@@ -40,6 +40,7 @@ Explanation explanation_of(std::vector<std::string> effects, const ScoredFit& s,
   e.training_cost = s.training_cost;
   e.held_out_cost = s.held_out_cost;
   e.residuals = s.training_residuals + s.held_out_residuals;
+  e.held_out_residuals = s.held_out_residuals;
   e.correlation_time = s.correlation_time;
   e.held_out_signals = s.held_out_signals;
   return e;

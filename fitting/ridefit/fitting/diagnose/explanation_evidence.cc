@@ -25,16 +25,21 @@ void weigh_explanations(std::vector<Explanation>& explanations) {
   const double tau = std::max(best->correlation_time, 1.0);
   double lowest = std::numeric_limits<double>::infinity();
   for (auto& e : explanations) {
-    const double residuals = static_cast<double>(std::max<std::size_t>(e.residuals, 1));
+    // The judging data's cost where there is judging data; an explanation scored on its
+    // training data alone (no held-out residuals) is weighed on that.
+    const bool judged = e.held_out_residuals > 0;
+    const double residuals =
+        static_cast<double>(std::max<std::size_t>(judged ? e.held_out_residuals : e.residuals, 1));
     const double independent = std::max(residuals / tau, 2.0);
-    const double cost = std::max(e.training_cost + e.held_out_cost, 1e-300);
+    const double cost =
+        std::max(judged ? e.held_out_cost : e.training_cost + e.held_out_cost, 1e-300);
     e.bic = independent * std::log(2.0 * cost / residuals) +
             static_cast<double>(e.free_parameters) * std::log(independent);
     lowest = std::min(lowest, e.bic);
   }
   double total = 0.0;
   for (auto& e : explanations) {
-    e.probability = std::exp(-0.5 * (e.bic - lowest));
+    e.probability = std::exp(-0.5 * (e.bic - lowest) / kEvidenceTemperature);
     total += e.probability;
   }
   for (auto& e : explanations) e.probability /= total;
