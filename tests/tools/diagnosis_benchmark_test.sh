@@ -4,7 +4,10 @@
 # bad flags are exit 2, and a 10-case run of vehicle spectra (seed 3; the rig's loop diagnoses
 # take minutes each) scores: no case stops with an error, every control quiet, the evidence's most
 # probable explanation exactly right in at least 8 of 10, the verdict in at least 5 (measured
-# 2026-12-06: 9 and 6; docs/diagnosis.md), the Brier score of the verdict's p at most 0.1 (0.014).
+# 2026-12-06: 9 and 6; docs/diagnosis.md), the Brier score of the verdict's p at most 0.1 (0.014);
+# its --calibrate recomputes every explanation's probability from the run's --json as the
+# diagnosis weighed it (the Python weighing against weigh_explanations) and refuses a folder
+# without a run.
 # Usage: diagnosis_benchmark_test.sh RIDEFIT SOURCE_DIR
 set -euo pipefail
 ridefit="$1"
@@ -49,3 +52,17 @@ assert s["most_probable_right"] >= 8, s
 assert s["right"] >= 5, s
 assert s["brier_verdict_p"] <= 0.1, s
 PY
+
+"$bench" --calibrate --cases 10 --seed 3 --kinds vehicle --out "$tmp/run" > "$tmp/cal.log" \
+  || { cat "$tmp/cal.log"; fail "--calibrate on the 10-case run"; }
+python3 - "$tmp/run/calibration.json" <<'PY' || { cat "$tmp/cal.log"; fail "the calibration"; }
+import json, sys
+c = json.load(open(sys.argv[1]))
+assert c["cases"] == 10, c
+assert c["largest_difference_at_shipped"] < 1e-9, c
+assert len(c["grid"]) == 30 and c["brier_at_best"] <= c["brier_at_shipped"], c
+PY
+status=0
+"$bench" --calibrate --cases 10 --seed 3 --out "$tmp/empty" 2> "$tmp/err" || status=$?
+[ "$status" -eq 2 ] || fail "--calibrate on an empty folder: exit $status, expected 2"
+grep -q "no finished cases" "$tmp/err" || fail "--calibrate on an empty folder: $(cat "$tmp/err")"
