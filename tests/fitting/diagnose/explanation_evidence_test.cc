@@ -65,7 +65,7 @@ TEST(ExplanationEvidence, AnEffectThatFitsOnlyTheTrainingDataBetterGainsNothing)
   weigh_explanations(e);
   EXPECT_TRUE(e[0].effects.empty());
   EXPECT_GT(e[0].probability, 0.99);
-  // Weighed on the training and judging data together, as before 2026-12-07, it had won.
+  // Weighed on the training and judging data together (no judging residuals given), it wins.
   Explanation a_train = a, nothing_train = nothing;
   a_train.held_out_residuals = nothing_train.held_out_residuals = 0;
   std::vector<Explanation> training_only{nothing_train, a_train};
