@@ -193,6 +193,12 @@ TEST(Diagnosis, AnEffectOutsideTheLibraryIsReportedAsUnexplained) {
   EXPECT_LE(region.low_Hz, 12.5);
   EXPECT_GE(region.high_Hz, 11.5);
   EXPECT_NE(r.verdict.find("no effect of the library explains"), std::string::npos) << r.verdict;
+  // The ratio's shape is weighed beside the library's explanations, and the verdict's p is that
+  // the library lacks it.
+  ASSERT_FALSE(r.spectral_shape.terms.empty()) << r.verdict;
+  EXPECT_TRUE(reports_outside_library(r));
+  EXPECT_GT(reported_probability(r), 0.9) << r.verdict;
+  EXPECT_NE(r.verdict.find("that the library lacks it"), std::string::npos) << r.verdict;
 }
 
 }  // namespace

@@ -64,7 +64,10 @@ TEST(ExplanationEvidence, AnEffectThatFitsOnlyTheTrainingDataBetterGainsNothing)
   std::vector<Explanation> e{nothing, a};
   weigh_explanations(e);
   EXPECT_TRUE(e[0].effects.empty());
-  EXPECT_GT(e[0].probability, 0.99);
+  // Equal judging costs: "a" pays its parameter alone, odds 1000^(1/(2T)) to one against it.
+  const double odds = std::pow(1000.0, 0.5 / kEvidenceTemperature);
+  EXPECT_NEAR(e[0].probability, odds / (1.0 + odds), 1e-12);
+  EXPECT_GT(e[0].probability, 0.95);
   // Weighed on the training and judging data together (no judging residuals given), it wins.
   Explanation a_train = a, nothing_train = nothing;
   a_train.held_out_residuals = nothing_train.held_out_residuals = 0;
@@ -98,9 +101,9 @@ TEST(ExplanationEvidence, VerdictWordsSayHowSureAndWhatTheDataCannotTellApart) {
 }
 
 TEST(ExplanationEvidence, ANamedEffectIsAsProbableAsEveryExplanationThatContainsIt) {
-  // "a" alone, "a" with a "b" that fits a little more (its parameter costs more than that: about
-  // 7 to one against it), and "c" far behind: that "a" is missing is nearly certain though "a"
-  // alone holds only about 7/8 of it.
+  // "a" alone, "a" with a "b" that fits a little more (its parameter costs more than that: odds
+  // of a few to one against it), and "c" far behind: that "a" is missing is nearly certain though
+  // "a" alone holds less than 0.99 of it.
   std::vector<Explanation> e{candidate({"a"}, 3, 100.0), candidate({"a", "b"}, 4, 99.5),
                              candidate({"c"}, 3, 130.0), candidate({}, 2, 150.0)};
   weigh_explanations(e);
@@ -117,6 +120,86 @@ TEST(ExplanationEvidence, ANamedEffectIsAsProbableAsEveryExplanationThatContains
   EXPECT_EQ(strongest_rival(e, {"a"})->effects, std::vector<std::string>{"c"});
   EXPECT_NEAR(named_probability(e, {}), find_explanation(e, {})->probability, 1e-15);
   EXPECT_NEAR(named_probability(e, {"a", "b"}), with_b->probability, 1e-15);
+}
+
+TEST(ExplanationEvidence, AnEffectThatFreesNoParameterCountsAsOneChoice) {
+  // "s" is a switch (tyre lift-off on a car whose tyre never lifts): it frees no parameter and
+  // predicts what nothing missing predicts. Counted at its free parameters it would tie with
+  // nothing (p = 0.5 each on a control); as one choice it loses by the odds of one parameter.
+  std::vector<Explanation> e{candidate({}, 2, 100.0), candidate({"s"}, 2, 100.0),
+                             candidate({"a"}, 3, 100.0), candidate({"s", "a"}, 3, 100.0)};
+  weigh_explanations(e);
+  const Explanation* nothing = find_explanation(e, {});
+  const Explanation* s = find_explanation(e, {"s"});
+  const Explanation* a = find_explanation(e, {"a"});
+  const Explanation* sa = find_explanation(e, {"a", "s"});
+  ASSERT_TRUE(nothing && s && a && sa);
+  EXPECT_EQ(nothing->structural_choices, 0);
+  EXPECT_EQ(s->structural_choices, 1);
+  EXPECT_EQ(a->structural_choices, 0);  // "a" frees a parameter of its own
+  EXPECT_EQ(sa->structural_choices, 1);
+  const double n = 1000.0, odds = std::pow(n, 0.5 / kEvidenceTemperature);
+  EXPECT_NEAR(s->bic - nothing->bic, std::log(n), 1e-9);
+  EXPECT_NEAR(nothing->probability / s->probability, odds, 1e-6 * odds);
+  EXPECT_NEAR(s->probability, a->probability, 1e-15);
+  EXPECT_NEAR(nothing->probability / sa->probability, odds * odds, 1e-6 * odds * odds);
+  EXPECT_GT(nothing->probability, 0.9);
+}
+
+TEST(ExplanationEvidence, AForceOutsideTheLibraryIsWeighedBesideTheLibrary) {
+  // A moving mass the library does not have: a gas force takes a little of it (180 against 200),
+  // the shape's two terms, fitted on the training data, take 150 of the 200 off the judging data.
+  std::vector<Explanation> e{candidate({}, 2, 200.0, 4.0), candidate({"g"}, 3, 180.0, 5.0)};
+  weigh_explanations(e);
+  EXPECT_EQ(e[0].effects, std::vector<std::string>{"g"});
+  EXPECT_GT(e[0].probability, 0.99);
+  add_outside_library(e, {}, 150.0, 2);
+  ASSERT_EQ(e.size(), 3u);
+  ASSERT_TRUE(e[0].outside_library);  // weighed again, most probable first
+  EXPECT_TRUE(e[0].effects.empty());
+  EXPECT_EQ(e[0].free_parameters, 4);
+  EXPECT_EQ(e[0].structural_choices, 1);
+  EXPECT_DOUBLE_EQ(e[0].held_out_cost, 50.0);
+  // τ from the library's best fit (the gas force's, 5): n = 200 independent residuals.
+  const double n = 200.0;
+  auto bic = [&](double cost, int k) {
+    return n * std::log(2.0 * cost / 1000.0) + k * std::log(n);
+  };
+  EXPECT_NEAR(e[0].bic, bic(50.0, 5), 1e-9);
+  EXPECT_NEAR(find_explanation(e, {"g"})->bic, bic(180.0, 3), 1e-9);
+  EXPECT_GT(outside_probability(e, {}), 0.999);
+  // Nothing missing is the library's empty explanation alone, not the one outside it.
+  ASSERT_NE(find_explanation(e, {}), nullptr);
+  EXPECT_FALSE(find_explanation(e, {})->outside_library);
+  EXPECT_NEAR(named_probability(e, {}), find_explanation(e, {})->probability, 1e-15);
+  EXPECT_EQ(explanation_label(e[0]), "a force outside the library");
+  EXPECT_EQ(outside_evidence_words(e), " (p = 1.00 that the library lacks it)");
+  // The strongest rival to simulate is a library explanation.
+  ASSERT_NE(strongest_rival(e, {}), nullptr);
+  EXPECT_EQ(strongest_rival(e, {})->effects, std::vector<std::string>{"g"});
+
+  // A shape that takes little: the library's gas force stays ahead and the words name it.
+  std::vector<Explanation> weak{candidate({}, 2, 200.0, 4.0), candidate({"g"}, 3, 180.0, 5.0)};
+  weigh_explanations(weak);
+  add_outside_library(weak, {}, 25.0, 2);
+  EXPECT_LT(outside_probability(weak, {}), 0.5);
+  const std::string words = outside_evidence_words(weak);
+  EXPECT_NE(words.find("g explains it nearly as well"), std::string::npos) << words;
+
+  // Beside a named effect: the named effect is missing in both explanations.
+  std::vector<Explanation> beside{candidate({}, 2, 200.0), candidate({"g"}, 3, 100.0)};
+  weigh_explanations(beside);
+  add_outside_library(beside, {"g"}, 40.0, 1);
+  EXPECT_EQ(explanation_label(beside[0]), "g + a force outside the library");
+  EXPECT_NEAR(named_probability(beside, {"g"}), 1.0, 1e-9);
+  EXPECT_GT(outside_probability(beside, {"g"}), 0.99);
+
+  // No terms, or no explanation of the named effects: nothing is added.
+  std::vector<Explanation> none{candidate({}, 2, 200.0)};
+  add_outside_library(none, {}, 100.0, 0);
+  add_outside_library(none, {"x"}, 100.0, 2);
+  EXPECT_EQ(none.size(), 1u);
+  EXPECT_EQ(outside_evidence_words(none), "");
 }
 
 }  // namespace

@@ -182,6 +182,14 @@ TEST(LoopDiagnosis, ReportsADisagreementOutsideTheLibraryAsUnexplained) {
   EXPECT_EQ(r.residual_shape.terms[0].id, "travel_squared") << r.verdict;
   EXPECT_NEAR(r.residual_shape.terms[0].coefficient, 4e6, 1.2e6) << r.verdict;
   EXPECT_NE(r.verdict.find("the force the model lacks looks like"), std::string::npos);
+  // The shape is weighed as an explanation of its own, beside the library's, and holds the
+  // evidence: the library's explanations cannot take the verdict's probability.
+  EXPECT_GT(outside_probability(r.explanations, r.named), 0.9) << r.verdict;
+  if (r.named.empty()) {
+    EXPECT_TRUE(reports_outside_library(r));
+    EXPECT_GT(reported_probability(r), 0.9);
+    EXPECT_NE(r.verdict.find("that the library lacks it"), std::string::npos) << r.verdict;
+  }
 }
 
 TEST(LoopDiagnosis, SplitsOneRecordInHalvesAndSeveralAlternately) {

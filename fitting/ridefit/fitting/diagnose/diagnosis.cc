@@ -188,6 +188,23 @@ DiagnosisData split_record(const PsdMeasurement& record) {
   return {slice(record, 0, half), slice(record, half, record.time_s.size())};
 }
 
+bool reports_outside_library(const DiagnosisResult& result) {
+  return result.named.empty() && result.unexplained_left &&
+         std::any_of(result.explanations.begin(), result.explanations.end(),
+                     [](const Explanation& e) { return e.outside_library && e.effects.empty(); });
+}
+
+double reported_probability(const DiagnosisResult& result) {
+  return reports_outside_library(result) ? outside_probability(result.explanations, {})
+                                         : named_probability(result.explanations, result.named);
+}
+
+std::string verdict_evidence(const DiagnosisResult& result) {
+  return reports_outside_library(result)
+             ? outside_evidence_words(result.explanations)
+             : evidence_words(result.explanations, result.named, result.separation);
+}
+
 DiagnosisResult result_of(const Selection& selection, DataKind kind) {
   DiagnosisResult result;
   result.kind = kind;
@@ -296,9 +313,19 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   }
   std::vector<std::string> unexplained;
   for (const auto& region : result.unexplained) unexplained.push_back(describe(region));
+  result.unexplained_left = !result.unexplained.empty();
   if (!result.unexplained.empty()) {
     result.spectral_shape =
         spectral_shape(result.after, map_options.band_low_Hz, map_options.band_high_Hz);
+    // The shape is fitted on the even bins of the map's ratio and judged on the odd ones, in dB,
+    // not on the fit's residuals: its judged share is taken as the share of the named
+    // explanation's judging cost it would remove (optimistic, as spectral_shape.h says; the
+    // terms' parameters and the choice outside the library pay for it in the BIC).
+    if (const Explanation* named = find_explanation(result.explanations, result.named)) {
+      add_outside_library(result.explanations, result.named,
+                          result.spectral_shape.judged_share * named->held_out_cost,
+                          static_cast<int>(result.spectral_shape.terms.size()));
+    }
   }
   if (const Explanation* chosen = find_explanation(result.explanations, result.named);
       chosen && chosen->probability < kConfidentProbability) {
@@ -307,8 +334,8 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
           spectra_separation(*chosen, *rival, data.held_out.sample_rate_Hz, map_options);
     }
   }
-  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable,
-                              evidence_words(result.explanations, result.named, result.separation));
+  result.verdict =
+      verdict_of(result.named, unexplained, result.not_identifiable, verdict_evidence(result));
   if (!result.spectral_shape.terms.empty()) {
     result.verdict += fmt::format(
         "; the ratio of the measured to the simulated spectra looks like {} (a suggestion for a "

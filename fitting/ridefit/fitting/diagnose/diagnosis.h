@@ -83,7 +83,19 @@ struct DiagnosisResult {
   // When such regions remain: the force the final model lacks, in named terms of travel, velocity
   // and acceleration (residual_shape.h), a suggestion for a new effect.
   ResidualShape residual_shape;
+  // Set where the unexplained disagreements are: the verdict leaves one.
+  bool unexplained_left = false;
 };
+
+// The verdict's report of a force outside the library: nothing named, a disagreement left
+// unexplained, and an explanation outside the library weighed (add_outside_library).
+bool reports_outside_library(const DiagnosisResult& result);
+// The probability the verdict gives what it reports: the named effects' (named_probability), or,
+// when it reports a force outside the library, that explanation's (outside_probability).
+double reported_probability(const DiagnosisResult& result);
+// The verdict's words on the evidence (evidence_words, outside_evidence_words), with the result's
+// separation.
+std::string verdict_evidence(const DiagnosisResult& result);
 
 // The kind-independent part of a result: the baseline's and the final fit's models and
 // parameters, the rounds and the named effects (the maps and the verdict are the caller's).

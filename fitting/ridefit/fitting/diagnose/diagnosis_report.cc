@@ -55,30 +55,42 @@ void write_explanations(std::ostream& out, const DiagnosisResult& result) {
   if (result.explanations.empty()) return;
   out << "## How sure: the explanations weighed\n\n"
          "Each explanation fitted on the way (nothing missing, each effect, the pairs of the first "
-         "round's significant effects fitted jointly), weighed by BIC on the training and judging "
-         "data together, counting one independent residual per correlation time of the best "
-         "fit's judging residual; probabilities with equal prior odds. Where screening fits are "
-         "coarser than the reported ones (spectra), the leading three are refitted as the "
-         "reported fits are before they are weighed.\n\n"
-         "| explanation | free | training cost | held-out cost | BIC | probability |\n"
-         "| --- | --- | --- | --- | --- | --- |\n";
+         "round's significant effects fitted jointly; where a disagreement is left that has a "
+         "shape, the final model with that shape beside it, a force outside the library), weighed "
+         "by BIC on the judging data, whose parameters were fitted without it, counting one "
+         "independent residual per correlation time of the best library fit's judging residual "
+         "and one parameter for each structural choice (an effect that frees no parameter of its "
+         "own, the shape outside the library); probabilities exp(−BIC/(2T)) with equal prior odds "
+         "(T in docs/diagnosis.md). Where screening fits are coarser than the reported ones "
+         "(spectra), the leading three are refitted as the reported fits are before they are "
+         "weighed.\n\n"
+         "| explanation | free | choices | training cost | held-out cost | BIC | probability |\n"
+         "| --- | --- | --- | --- | --- | --- | --- |\n";
   const std::size_t shown = std::min<std::size_t>(result.explanations.size(), 10);
   for (std::size_t i = 0; i < shown; ++i) {
     const Explanation& e = result.explanations[i];
-    out << fmt::format("| {} | {} | {:.4g} | {:.4g} | {:.1f} | {:.3f} |\n",
-                       explanation_name(e.effects), e.free_parameters, e.training_cost,
-                       e.held_out_cost, e.bic, e.probability);
+    out << fmt::format("| {} | {} | {} | {:.4g} | {:.4g} | {:.1f} | {:.3f} |\n",
+                       explanation_label(e), e.free_parameters, e.structural_choices,
+                       e.training_cost, e.held_out_cost, e.bic, e.probability);
   }
   if (shown < result.explanations.size()) {
     out << fmt::format("\n({} more, each at most {:.3f}.)\n", result.explanations.size() - shown,
                        result.explanations[shown].probability);
   }
   out << "\n";
-  out << fmt::format("Probability that {}: {:.3f} (every explanation above that contains {}).\n\n",
-                     result.named.empty() ? std::string("nothing is missing")
-                                          : explanation_name(result.named) + " is missing",
-                     named_probability(result.explanations, result.named),
-                     result.named.empty() ? std::string("no effect") : std::string("it"));
+  if (reports_outside_library(result)) {
+    out << fmt::format(
+        "Probability that the records show a force outside the library: {:.3f} (the explanation "
+        "outside the library above).\n\n",
+        reported_probability(result));
+  } else {
+    out << fmt::format(
+        "Probability that {}: {:.3f} (every explanation above that contains {}).\n\n",
+        result.named.empty() ? std::string("nothing is missing")
+                             : explanation_name(result.named) + " is missing",
+        reported_probability(result),
+        result.named.empty() ? std::string("no effect") : std::string("it"));
+  }
   const Explanation* rival = strongest_rival(result.explanations, result.named);
   if (rival && !result.separation.empty()) {
     out << fmt::format("What separates it from the strongest rival, {} ({:.3f}): {}.\n\n",
@@ -90,6 +102,8 @@ nlohmann::json explanations_json(const std::vector<Explanation>& explanations) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& e : explanations) {
     j.push_back({{"effects", e.effects},
+                 {"outside_library", e.outside_library},
+                 {"structural_choices", e.structural_choices},
                  {"probability", e.probability},
                  {"bic", e.bic},
                  {"free_parameters", e.free_parameters},

@@ -327,9 +327,16 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
       unexplained.push_back(describe(region));
     }
   }
+  result.unexplained_left = !unexplained.empty();
   if (!unexplained.empty()) {
     result.residual_shape =
         shape_of_what_is_missing(data, after.model.strut, after.held_out_signals, options.solver);
+    // What the shape's terms, fitted on the training records, take off the judging records'
+    // cost (½·Σr², the same residuals the explanations are weighed on).
+    add_outside_library(
+        result.explanations, result.named,
+        0.5 * result.residual_shape.judged_share * result.residual_shape.judged_sum_of_squares_N2,
+        static_cast<int>(result.residual_shape.terms.size()));
   }
   if (const Explanation* chosen = find_explanation(result.explanations, result.named);
       chosen && chosen->probability < kConfidentProbability) {
@@ -337,8 +344,8 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
       result.separation = loop_separation(*chosen, *rival, data.held_out);
     }
   }
-  result.verdict = verdict_of(result.named, unexplained, result.not_identifiable,
-                              evidence_words(result.explanations, result.named, result.separation));
+  result.verdict =
+      verdict_of(result.named, unexplained, result.not_identifiable, verdict_evidence(result));
   if (!result.residual_shape.terms.empty()) {
     result.verdict += fmt::format(
         "; the force the model lacks looks like {} (a suggestion for a new effect, not one of "

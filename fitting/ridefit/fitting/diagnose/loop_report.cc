@@ -141,7 +141,7 @@ nlohmann::json loop_summary_json(const DiagnosisResult& result) {
           {"final_parameters", values_json(result.final_parameters)},
           {"sheet_values", sheet_values_json(result.sheet_values)},
           {"explanations", explanations_json(result.explanations)},
-          {"named_probability", named_probability(result.explanations, result.named)},
+          {"named_probability", reported_probability(result)},
           {"separation", result.separation},
           {"rounds", rounds_json(result, "gap_nrmse_percent")}};
 }

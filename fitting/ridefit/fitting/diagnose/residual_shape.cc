@@ -214,6 +214,7 @@ ResidualShape residual_shape(const std::vector<ShapeSamples>& training,
   const SelectionRows judge = rows_of(judging, shape.travel_centre_m, scales);
   const SparseSelection selection = select_columns(train, judge, options);
   shape.judged_share = selection.judged_share;
+  shape.judged_sum_of_squares_N2 = judge.target.squaredNorm();
   shape.options = options;
   for (const auto& c : selection.columns) {
     const Term& term = kTerms[static_cast<std::size_t>(c.column)];

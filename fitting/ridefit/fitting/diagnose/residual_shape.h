@@ -10,9 +10,9 @@ namespace ridefit::fitting::diagnose {
 // What a disagreement looks like that no effect of the library explains: the force the model
 // lacks on the rig (measured − simulated) regressed on a small basis of physically named terms of
 // the rig's travel, velocity and acceleration and of the model's own force (a stiffness, a
-// progressive spring or an even force in travel, a stop beyond part of the stroke, damping that grows or
-// flattens with speed or differs between compression and rebound, a friction level, a mass, a
-// gain). A suggestion for a new effect in words, never a named library effect.
+// progressive spring or an even force in travel, a stop beyond part of the stroke, damping that
+// grows or flattens with speed or differs between compression and rebound, a friction level, a
+// mass, a gain). A suggestion for a new effect in words, never a named library effect.
 //
 // The terms are chosen by forward selection fitted on the training records and judged on the
 // held-out ones (sparse_selection.h), each record's mean removed (a load-cell offset is no shape).
@@ -40,6 +40,9 @@ struct ShapeTerm {
 struct ResidualShape {
   std::vector<ShapeTerm> terms;  // in the order they entered; none: the basis says nothing
   double judged_share = 0.0;     // what the terms remove together on the judging records
+  // The judging records' missing force's sum of squares that judged_share is a share of (each
+  // record's mean removed) [N²].
+  double judged_sum_of_squares_N2 = 0.0;
   // Travel terms are taken about the training records' mid-stroke, over their half stroke.
   double travel_centre_m = 0.0;
   double half_stroke_m = 0.0;
