@@ -189,7 +189,8 @@ DiagnosisData split_record(const PsdMeasurement& record) {
 }
 
 bool reports_outside_library(const DiagnosisResult& result) {
-  return result.named.empty() && result.unexplained_left &&
+  const bool unexplained = !result.unexplained.empty() || !result.unexplained_loops.empty();
+  return result.named.empty() && unexplained &&
          std::any_of(result.explanations.begin(), result.explanations.end(),
                      [](const Explanation& e) { return e.outside_library && e.effects.empty(); });
 }
@@ -313,7 +314,6 @@ DiagnosisResult diagnose(const DiagnosisModel& baseline, const DiagnosisData& da
   }
   std::vector<std::string> unexplained;
   for (const auto& region : result.unexplained) unexplained.push_back(describe(region));
-  result.unexplained_left = !result.unexplained.empty();
   if (!result.unexplained.empty()) {
     result.spectral_shape =
         spectral_shape(result.after, map_options.band_low_Hz, map_options.band_high_Hz);

@@ -83,8 +83,6 @@ struct DiagnosisResult {
   // When such regions remain: the force the final model lacks, in named terms of travel, velocity
   // and acceleration (residual_shape.h), a suggestion for a new effect.
   ResidualShape residual_shape;
-  // Set where the unexplained disagreements are: the verdict leaves one.
-  bool unexplained_left = false;
 };
 
 // The verdict's report of a force outside the library: nothing named, a disagreement left

@@ -327,7 +327,6 @@ DiagnosisResult diagnose_loops(const DiagnosisModel& baseline, const LoopDiagnos
       unexplained.push_back(describe(region));
     }
   }
-  result.unexplained_left = !unexplained.empty();
   if (!unexplained.empty()) {
     result.residual_shape =
         shape_of_what_is_missing(data, after.model.strut, after.held_out_signals, options.solver);
