@@ -44,10 +44,10 @@ TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
     const double expected = reference[k];
     worst = std::max(worst, std::abs((*force)[k] - expected));
   }
-  // ESDIRK at its default tolerance: within 0.3 N (0.5 % of Fc) at the worst sample of the
-  // loop (the sharp turn after each reversal; 0.16 N measured), far less on average.
-  EXPECT_LT(worst, 0.3) << worst;
-  // A tighter tolerance converges on CVODE.
+  // ESDIRK at its default tolerance, its steps ending on the samples behind this compliant top
+  // mount: 1.3e-4 N at the worst sample of the loop (0.16 N when it interpolated between steps).
+  EXPECT_LT(worst, 0.01) << worst;
+  // A tighter tolerance converges on CVODE, as far as the spline through the samples lets it.
   StrutTestSolverOptions fine;
   fine.relative_tolerance = 1e-9;
   const auto finer = strut_test_force<double>(t, x, p, p, fine);
@@ -56,7 +56,42 @@ TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
     const double expected = reference[k];
     worst_fine = std::max(worst_fine, std::abs((*finer)[k] - expected));
   }
-  EXPECT_LT(worst_fine, 0.2 * worst);
+  EXPECT_LT(worst_fine, 5e-4) << worst_fine;
+}
+
+// A slip damper behind a compliant top mount: the force k_tm·(x − z_c) is the small difference of
+// a stiff state and the displacement it follows, and between step ends its error had been neither
+// estimated nor small. On the benchmark's rig multisine (500 Hz) at the default tolerance the
+// ESDIRK's force was 0.15 N RMS off CVODE behind 1.2e6 N/m and 436 N behind 5e7 N/m, against a
+// rig's 0.3 N noise: a fitted top mount came out 6.5 % soft and the diagnosis gave the right
+// explanation p = 0 beside a sensor delay or a digressive damper that soaked up the error.
+TEST(StrutTestResponse, CompliantTopMountForceFollowsCvodeBetweenSteps) {
+  const auto multisine = [](double t) {
+    constexpr double kTwoPi = 2.0 * std::numbers::pi;
+    return 3e-3 * std::sin(kTwoPi * 0.7 * t) + 1.5e-3 * std::sin(kTwoPi * 2.3 * t) +
+           0.8e-3 * std::sin(kTwoPi * 6.1 * t);
+  };
+  std::vector<double> t, x;
+  for (int k = 0; k <= 3000; ++k) {  // 6 s at 500 Hz
+    t.push_back(k * 2e-3);
+    x.push_back(multisine(t.back()));
+  }
+  for (const double k_tm : {1.2e6, 5e7}) {
+    auto p = model::dahl_strut_on_rig(5e6, 0.0, 1.0, k_tm, 887.0);
+    p.force_offset_N = 2.5;
+    ASSERT_FALSE(model::StrutTest::quasi_static(p));
+    const std::vector<double> reference = testing::cvode_rig_force(t, multisine, p);
+    const auto force = strut_test_force<double>(t, x, p, p);
+    ASSERT_TRUE(force.has_value());
+    // Inside the record: at its last sample the spline's estimated end slope puts 1.5 N (1.2e6)
+    // and 5.4 N (5e7) of the displacement's own interpolation error into the force.
+    double squares = 0.0;
+    for (std::size_t k = 250; k + 250 < t.size(); ++k) {
+      squares += std::pow((*force)[k] - reference[k], 2);
+    }
+    // 0.0023 N (1.2e6) and 0.0083 N (5e7) measured.
+    EXPECT_LT(std::sqrt(squares / 2501.0), 0.02) << "top mount " << k_tm;
+  }
 }
 
 // d(force)/d(parameters) through the ESDIRK steps equals central differences of the same
