@@ -62,7 +62,7 @@ TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
 // A slip damper behind a compliant top mount: the force k_tm·(x − z_c) is the small difference of
 // a stiff state and the displacement it follows, and between step ends its error had been neither
 // estimated nor small. On the benchmark's rig multisine (500 Hz) at the default tolerance the
-// ESDIRK's force was 0.15 N RMS off CVODE behind 1.2e6 N/m and 436 N behind 5e7 N/m, against a
+// ESDIRK's force was 0.15 N RMS off CVODE behind 1.2e6 N/m and 365 N behind 5e7 N/m, against a
 // rig's 0.3 N noise: a fitted top mount came out 6.5 % soft and the diagnosis gave the right
 // explanation p = 0 beside a sensor delay or a digressive damper that soaked up the error.
 TEST(StrutTestResponse, CompliantTopMountForceFollowsCvodeBetweenSteps) {

@@ -159,7 +159,7 @@ inline IntegratorOptions rig_integrator_options(const StrutTestSolverOptions& op
   // the small difference of a stiff state and the displacement it follows. Its error between step
   // ends is neither controlled nor small: the embedded estimate filters the stiff component
   // through G and the outputs interpolate its stage slopes, and steps of 10–100 relaxation times
-  // left the force 0.15 N RMS off at rtol 1e-6 behind 1.2e6 N/m (436 N behind 5e7), against a
+  // left the force 0.15 N RMS off at rtol 1e-6 behind 1.2e6 N/m (365 N behind 5e7), against a
   // rig's 0.3 N noise. Steps that end on the samples keep it within 0.01 N at rtol 1e-4–1e-6, for
   // two to four times the steps of a slip damper (friction's kinks take as many already).
   integrator.steps_end_on_outputs =
