@@ -16,6 +16,7 @@
 #include "ridefit/model/strut_test.h"
 #include "ridefit/simulate/strut_test_reference.h"
 #include "ridefit/simulate/strut_test_response.h"
+#include "ridefit/synthetic/multisine.h"
 
 namespace ridefit::simulate {
 namespace {
@@ -28,12 +29,6 @@ struct RigEffectCase {
 
 void PrintTo(const RigEffectCase& c, std::ostream* os) { *os << c.name; }
 
-double multisine(double t) {
-  constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  return 3e-3 * std::sin(kTwoPi * 0.7 * t) + 1.5e-3 * std::sin(kTwoPi * 2.3 * t) +
-         0.8e-3 * std::sin(kTwoPi * 6.1 * t);
-}
-
 // A coil current drifting slowly between 0 and 1 A (straight lines between samples in ESDIRK
 // differ from it by microamperes).
 double current(double t) { return 0.5 + 0.5 * std::sin(2.0 * std::numbers::pi * 0.4 * t); }
@@ -45,6 +40,7 @@ TEST_P(ReferenceAgainstEsdirk, AgreeOnTheBenchmarksMultisine) {
   auto p = model::dahl_strut_on_rig(5e6, 60.0, 1.0, 488000.0, 886.9);
   p.force_offset_N = 2.5;
   GetParam().set(p);
+  const synthetic::Multisine multisine = synthetic::lab_three_sines();  // the benchmark's motion
   std::vector<double> t, x, u;
   for (int k = 0; k <= 3000; ++k) {  // 6 s at 500 Hz
     t.push_back(k * 2e-3);

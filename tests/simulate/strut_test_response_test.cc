@@ -14,6 +14,7 @@
 #include "ridefit/simulate/integrator.h"
 #include "ridefit/simulate/ode_system.h"
 #include "ridefit/simulate/strut_test_system.h"
+#include "ridefit/synthetic/multisine.h"
 #include "support/cvode_rig_record.h"
 
 namespace ridefit::simulate {
@@ -67,11 +68,8 @@ TEST(StrutTestResponse, FollowsCvodeOnTheSameEquations) {
 // rig's 0.3 N noise: a fitted top mount came out 6.5 % soft and the diagnosis gave the right
 // explanation p = 0 beside a sensor delay or a digressive damper that soaked up the error.
 TEST(StrutTestResponse, CompliantTopMountForceFollowsCvodeBetweenSteps) {
-  const auto multisine = [](double t) {
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
-    return 3e-3 * std::sin(kTwoPi * 0.7 * t) + 1.5e-3 * std::sin(kTwoPi * 2.3 * t) +
-           0.8e-3 * std::sin(kTwoPi * 6.1 * t);
-  };
+  const synthetic::Multisine multisine =
+      synthetic::lab_three_sines();  // the benchmark's rig motion
   std::vector<double> t, x;
   for (int k = 0; k <= 3000; ++k) {  // 6 s at 500 Hz
     t.push_back(k * 2e-3);
@@ -103,11 +101,8 @@ TEST(StrutTestResponse, CompliantTopMountForceFollowsCvodeBetweenSteps) {
 // events on the slack's corners (another integrator, and the rig's samples through a spline) and
 // against the strut's own bound: friction ≤ Fc plus the damper at the rig's top speed.
 TEST(StrutTestResponse, ReferenceFollowsTheStrutAcrossAFreePlay) {
-  const auto multisine = [](double t) {
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
-    return 3e-3 * std::sin(kTwoPi * 0.7 * t) + 1.5e-3 * std::sin(kTwoPi * 2.3 * t) +
-           0.8e-3 * std::sin(kTwoPi * 6.1 * t);
-  };
+  const synthetic::Multisine multisine =
+      synthetic::lab_three_sines();  // the benchmark's rig motion
   std::vector<double> t, x;
   for (int k = 0; k <= 6000; ++k) {  // 12 s at 500 Hz, the benchmark's rig record
     t.push_back(k * 2e-3);
