@@ -189,7 +189,8 @@ DiagnosisData split_record(const PsdMeasurement& record) {
 }
 
 bool reports_outside_library(const DiagnosisResult& result) {
-  const bool unexplained = !result.unexplained.empty() || !result.unexplained_loops.empty();
+  const bool unexplained = !result.unexplained.empty() || !result.unexplained_loops.empty() ||
+                           result.unexplained_shape_share > 0.0;
   return result.named.empty() && unexplained &&
          std::any_of(result.explanations.begin(), result.explanations.end(),
                      [](const Explanation& e) { return e.outside_library && e.effects.empty(); });

@@ -80,6 +80,10 @@ struct DiagnosisResult {
   LoopDisagreementMap loops_after;
   std::vector<std::vector<double>> before_force_N, after_force_N;
   std::vector<LoopRegion> unexplained_loops;
+  // When no region is left but the residual's shape takes a significant force off the judging
+  // records (a moving mass, a lag: forces no travel or velocity bin shows): that force's RMS as a
+  // share of the measured force's; 0 otherwise. Unexplained too.
+  double unexplained_shape_share = 0.0;
   // When such regions remain: the force the final model lacks, in named terms of travel, velocity
   // and acceleration (residual_shape.h), a suggestion for a new effect.
   ResidualShape residual_shape;

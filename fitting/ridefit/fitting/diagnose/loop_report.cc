@@ -136,6 +136,7 @@ nlohmann::json loop_summary_json(const DiagnosisResult& result) {
           {"gap_after_nrmse_percent", result.gap_after},
           {"regions_before", regions_json(result.loops_before.regions)},
           {"unexplained", regions_json(result.unexplained_loops)},
+          {"unexplained_shape_share", result.unexplained_shape_share},
           {"residual_shape", shape_json(result.residual_shape)},
           {"baseline_parameters", values_json(result.baseline_parameters)},
           {"final_parameters", values_json(result.final_parameters)},
