@@ -8,6 +8,7 @@ namespace ridefit::cli {
 // command and throws InputError / RunError for main() to map to exit codes.
 void register_modes(CLI::App& app);
 void register_simulate(CLI::App& app);
+void register_simulate_rig(CLI::App& app);
 void register_friction_study(CLI::App& app);
 void register_analyse(CLI::App& app);
 void register_sweep(CLI::App& app);
@@ -22,6 +23,7 @@ void register_batch(CLI::App& app);
 inline void register_subcommands(CLI::App& app) {
   register_modes(app);
   register_simulate(app);
+  register_simulate_rig(app);
   register_friction_study(app);
   register_analyse(app);
   register_sweep(app);
