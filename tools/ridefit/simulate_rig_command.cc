@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -38,24 +39,23 @@ struct SimulateRigFlags {
 
 // `--set NAME=VALUE` of the strut on the rig (fitting/strut_parameters.h names: the model's keys
 // and the rig's own, such as force_offset_N or moving_mass_kg).
-model::StrutTestParameters<double> with_set(model::StrutTestParameters<double> strut,
+model::StrutTestParameters<double> with_set(const model::StrutTestParameters<double>& strut,
                                             const std::vector<std::string>& entries) {
-  for (const auto& [name, value] : parse_overrides(entries)) {
+  const std::map<std::string, double> values = parse_overrides(entries);
+  for (const auto& [name, value] : values) {
     const std::string entry = fmt::format("--set {}={:g}", name, value);
-    std::size_t index = 0;
     try {
-      index = fitting::strut_parameter_index(name);
+      const fitting::StrutParameterInfo& info =
+          fitting::kStrutParameters[fitting::strut_parameter_index(name)];
+      if (value != 0.0 && (value < info.lower || value > info.upper)) {
+        throw InputError(fmt::format("give 0 (off) or a value from {:g} to {:g} [{}]", info.lower,
+                                     info.upper, info.row->unit));
+      }
     } catch (const InputError& e) {
       throw InputError(fmt::format("{}: {}", entry, e.what()));
     }
-    const fitting::StrutParameterInfo& info = fitting::kStrutParameters[index];
-    if (value != 0.0 && (value < info.lower || value > info.upper)) {
-      throw InputError(fmt::format("{}: give 0 (off) or a value from {:g} to {:g} [{}]", entry,
-                                   info.lower, info.upper, info.row->unit));
-    }
-    fitting::strut_parameter(strut, index) = value;
   }
-  return strut;
+  return fitting::with_strut_values(strut, values);
 }
 
 void run(const SimulateRigFlags& flags) {
@@ -89,15 +89,14 @@ void run(const SimulateRigFlags& flags) {
     table.add("force", "N", record.force_N);
     io::write_measurement_table(table, flags.output_file);
   }
-  const road::RigMotion motion(test.test);
   if (flags.json) {
     nlohmann::json j = {{"test", flags.test_file},
                         {"waveform", road::waveform_name(test.test.waveform)},
                         {"samples", record.time_s.size()},
                         {"duration_s", test.test.duration_s},
-                        {"peak_displacement_m", motion.peak_displacement_m()},
-                        {"peak_velocity_m_per_s", motion.peak_velocity_m_per_s()},
-                        {"highest_frequency_Hz", motion.highest_frequency_Hz()},
+                        {"peak_displacement_m", record.peak_displacement_m},
+                        {"peak_velocity_m_per_s", record.peak_velocity_m_per_s},
+                        {"highest_frequency_Hz", record.highest_frequency_Hz},
                         {"peak_force_N", record.peak_force_N},
                         {"peak_force_time_s", record.peak_time_s},
                         {"limits",
@@ -113,10 +112,9 @@ void run(const SimulateRigFlags& flags) {
       "{} test, {} samples over {:g} s: ±{:.3g} mm (rig ±{:.3g} mm), up to {:.3g} m/s (rig "
       "{:.3g} m/s), {:.3g} Hz (rig {:.3g} Hz), peak force {:.4g} N at {:.3g} s (rig {:.4g} kN)\n",
       road::waveform_name(test.test.waveform), record.time_s.size(), test.test.duration_s,
-      1e3 * motion.peak_displacement_m(), 1e3 * test.limits.stroke_m,
-      motion.peak_velocity_m_per_s(), test.limits.velocity_m_per_s, motion.highest_frequency_Hz(),
-      test.limits.frequency_Hz, record.peak_force_N, record.peak_time_s,
-      1e-3 * test.limits.force_N);
+      1e3 * record.peak_displacement_m, 1e3 * test.limits.stroke_m, record.peak_velocity_m_per_s,
+      test.limits.velocity_m_per_s, record.highest_frequency_Hz, test.limits.frequency_Hz,
+      record.peak_force_N, record.peak_time_s, 1e-3 * test.limits.force_N);
   if (!flags.output_file.empty()) std::cout << "record written to " << flags.output_file << "\n";
 }
 

@@ -56,7 +56,9 @@ const char* waveform_name(RigWaveform waveform) {
   return "?";
 }
 
-void RigTest::validate(const RigLimits& limits) const {
+void RigTest::validate(const RigLimits& limits) const { (void)motion(limits); }
+
+RigMotion RigTest::motion(const RigLimits& limits) const {
   limits.validate();
   require_positive(duration_s, "duration_s", "s");
   require_positive(sample_rate_Hz, "sample_rate_Hz", "Hz");
@@ -134,6 +136,7 @@ void RigTest::validate(const RigLimits& limits) const {
                     key, waveform == RigWaveform::kTriangle ? "fundamental" : "motion", fastest,
                     limits.frequency_Hz));
   }
+  return motion;
 }
 
 RigMotion::RigMotion(const RigTest& test) : test_(test) {

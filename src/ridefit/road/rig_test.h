@@ -26,6 +26,8 @@ enum class RigWaveform {
 // "sine", "triangle", "random".
 const char* waveform_name(RigWaveform waveform);
 
+class RigMotion;
+
 // One test for a strut rig: the actuator's displacement over time, sampled as a rig records it.
 // Plain fields, checked as a whole by validate() (field names are the test file's keys).
 struct RigTest {
@@ -46,6 +48,8 @@ struct RigTest {
   // beyond `limits` (its peak displacement, peak velocity or highest frequency), with the value
   // that would fit.
   void validate(const RigLimits& limits = {}) const;
+  // validate() and the motion it checked (one evaluation of the random test's peaks).
+  RigMotion motion(const RigLimits& limits = {}) const;
 };
 
 // A rig test's displacement, known at every instant (the reference integrator runs on it) and

@@ -11,9 +11,11 @@ namespace ridefit::simulate {
 RigTestRecord simulate_rig_test(const model::StrutTestParameters<double>& strut,
                                 const road::RigTest& test, const road::RigLimits& limits,
                                 const StrutTestSolverOptions& solver) {
-  test.validate(limits);
-  const road::RigMotion motion(test);
+  const road::RigMotion motion = test.motion(limits);
   RigTestRecord record;
+  record.peak_displacement_m = motion.peak_displacement_m();
+  record.peak_velocity_m_per_s = motion.peak_velocity_m_per_s();
+  record.highest_frequency_Hz = motion.highest_frequency_Hz();
   motion.samples(record.time_s, record.displacement_m, record.velocity_m_per_s);
   StrutTestSolverOptions options = solver;
   std::vector<double> velocity = record.velocity_m_per_s;

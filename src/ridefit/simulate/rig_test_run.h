@@ -15,6 +15,10 @@ struct RigTestRecord {
   std::vector<double> displacement_m;
   std::vector<double> velocity_m_per_s;  // the actuator's, exact (a rig's LVDT rate channel)
   std::vector<double> force_N;
+  // The motion's peaks and fastest frequency (road::RigMotion), and the force's.
+  double peak_displacement_m = 0.0;
+  double peak_velocity_m_per_s = 0.0;
+  double highest_frequency_Hz = 0.0;
   double peak_force_N = 0.0;  // the largest |force|
   double peak_time_s = 0.0;   // where it is
 };
